@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs every Debian package symmesh's build, tests and demo use. Idempotent: packages already
+# present are not reinstalled, and apt-get update runs only when something is missing.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libboost-graph-dev
+  libeigen3-dev libtbb-dev
+  libgtest-dev libgmock-dev librapidcheck-dev
+  libgraphviz-dev graphviz
+  libcli11-dev nlohmann-json3-dev
+  python3-meshio
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,484 @@
+/// Definitions A.6–A.14 (element space, facets/faces, face-complete, co-faces, conforming,
+/// element complex) and Definition 2.4 (mesh), 2.7 (mesh boundary) for simplices —
+/// spec/definitions.md#def-a-10, #def-a-13, #def-2-4, #def-2-7
+///
+/// An element space is stored as a point array plus a set of simplices over it. Checks:
+///  - face-complete (Def A.10): every facet of every element is an element;
+///  - no dangling elements (Def 2.4 iii): every element is a cell or has a co-face cell;
+///  - conforming (Def A.13): every two elements meet in a common face. For simplices this holds
+///    iff the face completion has pairwise disjoint relative interiors and no two vertex indices
+///    carry equal coordinates (spec/definitions.md#conforming-by-relative-interiors).
+#pragma once
+#include "symmesh/core/exact_lp.h"
+#include "symmesh/core/linear_algebra.h"
+#include "symmesh/core/point.h"
+#include "symmesh/core/simplex.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace symmesh::core {
+
+template <class FT, int D>
+struct ElementComplex {
+  using PointT = Point<FT, D>;
+  std::vector<PointT> points;
+  std::vector<Simplex> elements; ///< sorted, unique
+
+  std::vector<PointT> coords(const Simplex& s) const {
+    std::vector<PointT> out;
+    for (VertexId v : s) out.push_back(points.at(v));
+    return out;
+  }
+  void normalize() {
+    std::sort(elements.begin(), elements.end());
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  }
+  bool contains(const Simplex& s) const {
+    return std::binary_search(elements.begin(), elements.end(), s);
+  }
+  int cell_dimension() const {
+    int d = -1;
+    for (const auto& e : elements) d = std::max(d, e.dim());
+    return d;
+  }
+  std::vector<Simplex> cells() const {
+    std::vector<Simplex> out;
+    const int cd = cell_dimension();
+    for (const auto& e : elements)
+      if (e.dim() == cd) out.push_back(e);
+    return out;
+  }
+  std::vector<Simplex> elements_of_dimension(int k) const {
+    std::vector<Simplex> out;
+    for (const auto& e : elements)
+      if (e.dim() == k) out.push_back(e);
+    return out;
+  }
+};
+
+/// Affine independence of the vertex coordinates (Def A.15): a k-simplex spans a k-flat.
+template <class FT, int D>
+bool affinely_independent(const std::vector<Point<FT, D>>& p) {
+  if (p.size() <= 1) return true;
+  if (int(p.size()) > D + 1) return false;
+  Matrix<FT> m;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    std::vector<FT> row(D);
+    for (int d = 0; d < D; ++d) row[d] = p[i][d] - p[0][d];
+    m.push_back(row);
+  }
+  return rank(m) == p.size() - 1;
+}
+
+/// Barycentric coordinates of x with respect to the simplex with vertices b, if x ∈ aff(b).
+template <class FT, int D>
+std::optional<std::vector<FT>> barycentric(const std::vector<Point<FT, D>>& b,
+                                           const Point<FT, D>& x) {
+  const std::size_t m = b.size();
+  Matrix<FT> a(D + 1, std::vector<FT>(m));
+  std::vector<FT> rhs(D + 1);
+  for (int d = 0; d < D; ++d) {
+    for (std::size_t j = 0; j < m; ++j) a[d][j] = b[j][d];
+    rhs[d] = x[d];
+  }
+  for (std::size_t j = 0; j < m; ++j) a[D][j] = 1;
+  rhs[D] = 1;
+  return solve_unique(a, rhs);
+}
+
+/// x ∈ conv(b) for an affinely independent b.
+template <class FT, int D>
+bool point_in_simplex(const std::vector<Point<FT, D>>& b, const Point<FT, D>& x) {
+  auto mu = barycentric<FT, D>(b, x);
+  if (!mu) return false;
+  for (const auto& v : *mu)
+    if (v < 0) return false;
+  return true;
+}
+
+/// relint(conv a) ∩ relint(conv b) ≠ ∅, decided exactly.
+template <class FT, int D>
+bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
+                             const std::vector<Point<FT, D>>& b) {
+  if (a.size() == 1 && b.size() == 1) return a[0] == b[0];
+  if (a.size() == 1) {
+    auto mu = barycentric<FT, D>(b, a[0]);
+    return mu && std::all_of(mu->begin(), mu->end(), [](const FT& v) { return v > 0; });
+  }
+  if (b.size() == 1) return relative_interiors_meet<FT, D>(b, a);
+  return common_point<FT, D>({{a, true}, {b, true}}).strict_meet;
+}
+
+/// conv a ∩ conv b ≠ ∅ (closed sets), decided exactly.
+template <class FT, int D>
+bool closed_simplices_meet(const std::vector<Point<FT, D>>& a,
+                           const std::vector<Point<FT, D>>& b) {
+  return common_point<FT, D>({{a, false}, {b, false}}).closed_meet;
+}
+
+/// Exact axis-aligned bounding box, used only to skip pairs that cannot meet.
+template <class FT, int D>
+struct Box {
+  Point<FT, D> lo, hi;
+  bool overlaps(const Box& o) const {
+    for (int d = 0; d < D; ++d)
+      if (hi[d] < o.lo[d] || o.hi[d] < lo[d]) return false;
+    return true;
+  }
+};
+template <class FT, int D>
+Box<FT, D> box_of(const std::vector<Point<FT, D>>& p) {
+  Box<FT, D> b{p[0], p[0]};
+  for (const auto& q : p)
+    for (int d = 0; d < D; ++d) {
+      if (q[d] < b.lo[d]) b.lo[d] = q[d];
+      if (b.hi[d] < q[d]) b.hi[d] = q[d];
+    }
+  return b;
+}
+
+/// Calls f(i, j) for every pair i < j of items whose boxes overlap (sweep along x).
+template <class FT, int D, class F>
+void for_each_overlapping_pair(const std::vector<Box<FT, D>>& boxes, F&& f) {
+  std::vector<std::size_t> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return boxes[a].lo[0] < boxes[b].lo[0]; });
+  for (std::size_t x = 0; x < order.size(); ++x)
+    for (std::size_t y = x + 1; y < order.size(); ++y) {
+      if (boxes[order[x]].hi[0] < boxes[order[y]].lo[0]) break;
+      if (boxes[order[x]].overlaps(boxes[order[y]]))
+        if (!f(std::min(order[x], order[y]), std::max(order[x], order[y]))) return;
+    }
+}
+
+/// Face-completion fc(X) (Def A.10, Eq. A.8) for simplices: all faces of all elements.
+template <class FT, int D>
+ElementComplex<FT, D> face_completion(const ElementComplex<FT, D>& x) {
+  ElementComplex<FT, D> out;
+  out.points = x.points;
+  for (const auto& e : x.elements)
+    for (const auto& f : faces(e)) out.elements.push_back(f);
+  out.normalize();
+  return out;
+}
+
+template <class FT, int D>
+bool elements_nondegenerate(const ElementComplex<FT, D>& x, std::ostream* why = nullptr) {
+  for (const auto& e : x.elements) {
+    for (VertexId v : e)
+      if (v >= x.points.size()) {
+        if (why) *why << "element refers to vertex " << v << " which does not exist";
+        return false;
+      }
+    if (!affinely_independent<FT, D>(x.coords(e))) {
+      if (why) *why << "element with " << int(e.n) << " vertices is degenerate (not affinely independent)";
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Def A.10: face-complete. For non-degenerate simplices the facets cover the relative boundary
+/// with disjoint relative interiors, so it suffices that every facet is present.
+template <class FT, int D>
+bool is_face_complete(const ElementComplex<FT, D>& x, std::ostream* why = nullptr) {
+  if (!elements_nondegenerate(x, why)) return false;
+  for (const auto& e : x.elements)
+    for (const auto& f : facets(e))
+      if (!x.contains(f)) {
+        if (why) *why << "a facet of a " << e.dim() << "-simplex is missing";
+        return false;
+      }
+  return true;
+}
+
+/// Def 2.4 (iii): every element is a cell or has a co-face cell.
+template <class FT, int D>
+bool has_no_dangling_elements(const ElementComplex<FT, D>& x, std::ostream* why = nullptr) {
+  const int cd = x.cell_dimension();
+  const auto cells = x.cells();
+  for (const auto& e : x.elements) {
+    if (e.dim() == cd) continue;
+    bool has = false;
+    for (const auto& c : cells)
+      if (e.is_face_of(c)) {
+        has = true;
+        break;
+      }
+    if (!has) {
+      if (why) *why << "dangling " << e.dim() << "-element (no co-face cell)";
+      return false;
+    }
+  }
+  return true;
+}
+
+/// A pair of elements whose intersection is not a common face.
+struct ConformityViolation {
+  Simplex a, b;
+};
+
+/// Def A.13 for simplices: checks the face completion for pairwise disjoint relative interiors
+/// and for distinct vertex indices with equal coordinates. Returns the first violating pair.
+template <class FT, int D>
+std::optional<ConformityViolation> find_nonconformity(const ElementComplex<FT, D>& x) {
+  const auto fc = face_completion(x);
+  std::vector<Box<FT, D>> boxes;
+  for (const auto& e : fc.elements) boxes.push_back(box_of<FT, D>(fc.coords(e)));
+  std::optional<ConformityViolation> bad;
+  for_each_overlapping_pair<FT, D>(boxes, [&](std::size_t i, std::size_t j) {
+    const Simplex& a = fc.elements[i];
+    const Simplex& b = fc.elements[j];
+    if (a.is_face_of(b) || b.is_face_of(a)) return true; // relint(face) ⊆ bnd(b)
+    if (relative_interiors_meet<FT, D>(fc.coords(a), fc.coords(b))) {
+      bad = ConformityViolation{a, b};
+      return false;
+    }
+    return true;
+  });
+  return bad;
+}
+
+template <class FT, int D>
+bool is_conforming(const ElementComplex<FT, D>& x, std::ostream* why = nullptr) {
+  if (!elements_nondegenerate(x, why)) return false;
+  if (auto v = find_nonconformity(x)) {
+    if (why) *why << "a " << v->a.dim() << "-element and a " << v->b.dim()
+                  << "-element meet outside a common face";
+    return false;
+  }
+  return true;
+}
+
+/// Def 2.4: a mesh is finite, face-complete, has no dangling elements, and lies in an element
+/// complex (is conforming).
+template <class FT, int D>
+bool is_mesh(const ElementComplex<FT, D>& x, std::ostream* why = nullptr) {
+  if (x.elements.empty()) {
+    if (why) *why << "empty element set";
+    return false;
+  }
+  return is_face_complete(x, why) && has_no_dangling_elements(x, why) && is_conforming(x, why);
+}
+
+/// cofaces_k(E) (Def A.11) restricted to the cells of x.
+template <class FT, int D>
+std::vector<Simplex> coface_cells(const ElementComplex<FT, D>& x, const Simplex& e) {
+  std::vector<Simplex> out;
+  const int cd = x.cell_dimension();
+  for (const auto& c : x.elements)
+    if (c.dim() == cd && e.is_face_of(c)) out.push_back(c);
+  return out;
+}
+
+/// Def 2.7: bnd(M) = elements in the relative boundary of us(M). For a mesh whose underlying
+/// space is a manifold this is the face completion of the facets with exactly one co-face cell.
+/// \pre is_mesh(m) and every facet has at most two co-face cells
+template <class FT, int D>
+ElementComplex<FT, D> mesh_boundary(const ElementComplex<FT, D>& m) {
+  std::map<Simplex, int> count;
+  const int cd = m.cell_dimension();
+  for (const auto& c : m.elements)
+    if (c.dim() == cd)
+      for (const auto& f : facets(c)) ++count[f];
+  ElementComplex<FT, D> out;
+  out.points = m.points;
+  for (const auto& [f, k] : count)
+    if (k == 1)
+      for (const auto& g : faces(f)) out.elements.push_back(g);
+  out.normalize();
+  return out;
+}
+
+/// x ∈ us(E).
+template <class FT, int D>
+bool point_in_underlying_space(const ElementComplex<FT, D>& e, const Point<FT, D>& x) {
+  for (const auto& s : e.elements)
+    if (point_in_simplex<FT, D>(e.coords(s), x)) return true;
+  return false;
+}
+
+namespace detail {
+/// Length (k = 1) or area (k = 2) of {s in the standard k-simplex : h_j(s) >= 0}, where
+/// h_j(s) = c_j + Σ_i g_{j,i} s_i with parameters s_1..s_k.
+template <class FT>
+FT clipped_standard_simplex_measure(int k, const std::vector<std::vector<FT>>& halfspaces) {
+  using P = std::array<FT, 2>;
+  std::vector<P> poly;
+  if (k == 1) {
+    poly = {P{FT(0), FT(0)}, P{FT(1), FT(0)}};
+  } else {
+    poly = {P{FT(0), FT(0)}, P{FT(1), FT(0)}, P{FT(0), FT(1)}};
+  }
+  auto eval = [&](const std::vector<FT>& h, const P& p) {
+    FT v = h[0] + h[1] * p[0];
+    if (k == 2) v += h[2] * p[1];
+    return v;
+  };
+  for (const auto& h : halfspaces) {
+    std::vector<P> next;
+    const std::size_t n = poly.size();
+    if (n == 0) break;
+    if (k == 1) {
+      const FT a = eval(h, poly[0]), b = eval(h, poly[1]);
+      if (a < 0 && b < 0) return FT(0);
+      if (a >= 0 && b >= 0) continue;
+      const FT t = a / (a - b);
+      const P x{poly[0][0] + t * (poly[1][0] - poly[0][0]), FT(0)};
+      poly = a >= 0 ? std::vector<P>{poly[0], x} : std::vector<P>{x, poly[1]};
+      continue;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const P& p = poly[i];
+      const P& q = poly[(i + 1) % n];
+      const FT a = eval(h, p), b = eval(h, q);
+      if (a >= 0) next.push_back(p);
+      if ((a >= 0) != (b >= 0)) {
+        const FT t = a / (a - b);
+        next.push_back(P{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+      }
+    }
+    poly = next;
+  }
+  if (k == 1) return poly.size() == 2 ? poly[1][0] - poly[0][0] : FT(0);
+  FT twice = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const P& p = poly[i];
+    const P& q = poly[(i + 1) % poly.size()];
+    twice += p[0] * q[1] - q[0] * p[1];
+  }
+  return twice / 2;
+}
+} // namespace detail
+
+/// e ⊆ us(M) for a simplex e, exactly (k <= 2 by measure; k = D by cell_covered_by).
+/// The relative interiors of M's elements partition us(M); e ∩ relint(f) has positive k-measure
+/// only if aff(e) ⊆ aff(f) and aff(e) lies in no facet hyperplane of f, and then its measure is
+/// that of e ∩ f, computed by clipping e's parameter simplex with f's barycentric half-spaces.
+/// e ⊆ us(M) iff the measures add up to e's (us(M) is closed).
+/// \pre M is face-complete and conforming
+template <class FT, int D>
+bool simplex_covered_by(const std::vector<Point<FT, D>>& e, const ElementComplex<FT, D>& m);
+
+/// A D-simplex c ⊆ us(M) for a pure D-dimensional mesh M: int(c) is connected, so if no element
+/// of bnd(M) meets int(c), int(c) lies wholly inside or wholly outside us(M), and the centroid
+/// decides which (closure then gives c itself).
+template <class FT, int D>
+bool cell_covered_by(const std::vector<Point<FT, D>>& c, const ElementComplex<FT, D>& m) {
+  Point<FT, D> centroid = zero_point<FT, D>();
+  for (const auto& p : c) centroid = centroid + p;
+  centroid = scaled<FT, D>(centroid, FT(1) / FT(int(c.size())));
+  if (!point_in_underlying_space(m, centroid)) return false;
+  const auto bnd = mesh_boundary(m);
+  const auto cbox = box_of<FT, D>(c);
+  for (const auto& g : bnd.elements) {
+    const auto gp = bnd.coords(g);
+    if (!cbox.overlaps(box_of<FT, D>(gp))) continue;
+    if (relative_interiors_meet<FT, D>(c, gp)) return false;
+  }
+  return true;
+}
+
+template <class FT, int D>
+bool simplex_covered_by(const std::vector<Point<FT, D>>& e, const ElementComplex<FT, D>& m) {
+  const int k = int(e.size()) - 1;
+  if (k == 0) return point_in_underlying_space(m, e[0]);
+  if (k == D && m.cell_dimension() == D) return cell_covered_by<FT, D>(e, m);
+  if (k > 2) throw std::invalid_argument("simplex_covered_by: a 3-simplex needs a pure 3D mesh");
+  FT total = 0;
+  const FT full = k == 1 ? FT(1) : FT(1) / FT(2);
+  const auto ebox = box_of<FT, D>(e);
+  for (const auto& f : m.elements) {
+    if (f.dim() < k) continue;
+    const auto fb = m.coords(f);
+    if (!ebox.overlaps(box_of<FT, D>(fb))) continue;
+    std::vector<std::vector<FT>> mu; // mu[i] = barycentric coordinates of e[i] w.r.t. f
+    bool in_aff = true;
+    for (const auto& a : e) {
+      auto b = barycentric<FT, D>(fb, a);
+      if (!b) {
+        in_aff = false;
+        break;
+      }
+      mu.push_back(*b);
+    }
+    if (!in_aff) continue;
+    bool in_facet_plane = false;
+    std::vector<std::vector<FT>> hs;
+    for (std::size_t j = 0; j < fb.size(); ++j) {
+      bool all_zero = true;
+      for (int i = 0; i <= k; ++i)
+        if (mu[i][j] != 0) all_zero = false;
+      if (all_zero && fb.size() > 1) {
+        in_facet_plane = true;
+        break;
+      }
+      std::vector<FT> h{mu[0][j]};
+      for (int i = 1; i <= k; ++i) h.push_back(mu[i][j] - mu[0][j]);
+      hs.push_back(h);
+    }
+    if (in_facet_plane) continue;
+    total += detail::clipped_standard_simplex_measure<FT>(k, hs);
+  }
+  return total == full;
+}
+
+/// Intersection of two element sets over the same point array (Lemma 2.1).
+template <class FT, int D>
+ElementComplex<FT, D> intersection(const ElementComplex<FT, D>& a, const ElementComplex<FT, D>& b) {
+  ElementComplex<FT, D> out;
+  out.points = a.points;
+  std::set_intersection(a.elements.begin(), a.elements.end(), b.elements.begin(), b.elements.end(),
+                        std::back_inserter(out.elements));
+  return out;
+}
+
+template <class FT, int D>
+ElementComplex<FT, D> set_union(const ElementComplex<FT, D>& a, const ElementComplex<FT, D>& b) {
+  ElementComplex<FT, D> out;
+  out.points = a.points;
+  std::set_union(a.elements.begin(), a.elements.end(), b.elements.begin(), b.elements.end(),
+                 std::back_inserter(out.elements));
+  return out;
+}
+
+/// Re-expresses two element sets over one point array in which exactly-equal coordinates share
+/// one index (so that set operations compare elements as point sets).
+template <class FT, int D>
+std::pair<ElementComplex<FT, D>, ElementComplex<FT, D>> unify(const ElementComplex<FT, D>& a,
+                                                            const ElementComplex<FT, D>& b) {
+  std::map<Point<FT, D>, VertexId, PointLess<FT, D>> index;
+  std::vector<Point<FT, D>> pts;
+  auto remap = [&](const ElementComplex<FT, D>& x) {
+    std::vector<VertexId> to(x.points.size());
+    for (std::size_t i = 0; i < x.points.size(); ++i) {
+      auto [it, inserted] = index.emplace(x.points[i], VertexId(pts.size()));
+      if (inserted) pts.push_back(x.points[i]);
+      to[i] = it->second;
+    }
+    ElementComplex<FT, D> y;
+    for (const auto& e : x.elements) {
+      std::array<VertexId, 4> ids{};
+      for (int i = 0; i < e.n; ++i) ids[i] = to[e.v[i]];
+      y.elements.push_back(Simplex::from_range(ids.data(), ids.data() + e.n));
+    }
+    return y;
+  };
+  auto ua = remap(a);
+  auto ub = remap(b);
+  ua.points = pts;
+  ub.points = pts;
+  ua.normalize();
+  ub.normalize();
+  return {ua, ub};
+}
+
+} // namespace symmesh::core
