@@ -1,0 +1,19 @@
+// The symmesh subcommands. The CLI is thin: it parses, calls the library, prints.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace symmesh::apps {
+
+/// Exit codes shared by all commands.
+enum Exit : int { ok = 0, negative = 1, bad_input = 2 };
+
+void add_check(CLI::App& app, int& exit_code);
+void add_graph(CLI::App& app, int& exit_code);
+void add_lemmas(CLI::App& app, int& exit_code);
+
+/// Prints "symmesh: error: <message>" as one line on stderr.
+void print_error(const std::string& message);
+
+} // namespace symmesh::apps

@@ -1,0 +1,17 @@
+/// SVG pictures of 2D structures (counterexamples, fixtures) — spec/outputs.md#svg
+#pragma once
+#include "symmesh/core/kernel.h"
+#include "symmesh/core/templated_structure.h"
+
+#include <string>
+
+namespace symmesh::io {
+
+/// The structure instance: every instance's cells filled in its own colour, edges drawn,
+/// instance labels T_{i,g} at the centroids.
+std::string structure_svg(const core::TemplatedStructure<Exact, 2>& x);
+
+/// A plain 2D element complex.
+std::string complex_svg(const core::ElementComplex<Exact, 2>& m);
+
+} // namespace symmesh::io

@@ -1,0 +1,173 @@
+// Unit tests of the exact core: transformations, predicates, complexes, AT and Lemma 4.2.
+#include <gtest/gtest.h>
+
+#include "symmesh/core/delaunay.h"
+#include "symmesh/core/kernel.h"
+#include "symmesh/core/respect.h"
+#include "symmesh/core/structure_report.h"
+
+using namespace symmesh::core;
+using symmesh::Exact;
+using P2 = Point<Exact, 2>;
+using P3 = Point<Exact, 3>;
+using T2 = RigidTransformation<Exact, 2>;
+using T3 = RigidTransformation<Exact, 3>;
+
+namespace {
+P2 p2(int x, int y) { return P2{{Exact(x), Exact(y)}}; }
+P2 p2q(int xn, int xd, int yn, int yd) { return P2{{Exact(xn) / xd, Exact(yn) / yd}}; }
+P3 p3(int x, int y, int z) { return P3{{Exact(x), Exact(y), Exact(z)}}; }
+
+ElementComplex<Exact, 2> complex2(std::vector<P2> pts, std::vector<Simplex> cells) {
+  ElementComplex<Exact, 2> m;
+  m.points = std::move(pts);
+  m.elements = std::move(cells);
+  return face_completion(m);
+}
+
+/// The unit square split along its diagonal, edges (0,0)-(1,0) and (0,1)-(1,1) split at
+/// x = split_bottom and x = split_top.
+ElementComplex<Exact, 2> split_square(Exact split_bottom, Exact split_top) {
+  std::vector<P2> pts{p2(0, 0), P2{{split_bottom, Exact(0)}}, p2(1, 0), p2(1, 1),
+                      P2{{split_top, Exact(1)}}, p2(0, 1)};
+  return complex2(pts, {{0, 1, 5}, {1, 4, 5}, {1, 2, 4}, {2, 3, 4}});
+}
+
+TemplatedStructure<Exact, 2> one_template(ElementComplex<Exact, 2> m, std::vector<T2> ts) {
+  TemplatedStructure<Exact, 2> x;
+  x.templates.push_back({"X1", TemplateKind::mesh, std::move(m)});
+  std::vector<InstanceSpec<Exact, 2>> inst;
+  for (auto& t : ts) inst.push_back({t, 1});
+  x.instances.push_back(inst);
+  return x;
+}
+} // namespace
+
+TEST(RigidTransformation, ReflectionIsAnInvolutionAndImproper) {
+  const auto r = T2::reflection(p2(3, 4), Exact(2));
+  EXPECT_TRUE((r * r).is_identity());
+  EXPECT_EQ(r.determinant_of_linear_part(), Exact(-1));
+  const auto q = r(p2q(6, 25, 8, 25)); // a point on the line 3x + 4y = 2 is fixed
+  EXPECT_EQ(q, p2q(6, 25, 8, 25));
+}
+
+TEST(RigidTransformation, PythagoreanRotationComposesExactly) {
+  const auto r = T2::rotation_2d(Exact(3) / 5, Exact(4) / 5, p2(1, 1));
+  EXPECT_EQ(r(p2(1, 1)), p2(1, 1));
+  EXPECT_EQ(r * r.inverse(), T2());
+  EXPECT_THROW(T2::rotation_2d(Exact(1) / 2, Exact(1) / 2, p2(0, 0)), std::invalid_argument);
+}
+
+TEST(RigidTransformation, QuaternionRotationIsOrthogonal) {
+  const auto r = T3::rotation_quaternion(Exact(1), Exact(2), Exact(3), Exact(4), p3(0, 0, 0));
+  EXPECT_TRUE(r.is_valid());
+  EXPECT_EQ(r.determinant_of_linear_part(), Exact(1));
+  EXPECT_EQ((r * r.inverse()), T3());
+}
+
+TEST(RigidTransformation, NonOrthogonalMatrixIsRejected) {
+  T2::Mat a{{{Exact(1), Exact(1) / 1000}, {Exact(0), Exact(1)}}};
+  EXPECT_THROW(T2::from_matrix(a, p2(0, 0)), std::invalid_argument);
+  T2::Mat s{{{Exact(0), Exact(0)}, {Exact(0), Exact(0)}}};
+  EXPECT_THROW(T2::from_matrix(s, p2(0, 0)), std::invalid_argument);
+}
+
+TEST(Predicates, RelativeInteriors) {
+  // Two segments crossing at (1/2, 1/2); touching at an endpoint; collinear overlapping.
+  EXPECT_TRUE((relative_interiors_meet<Exact, 2>({p2(0, 0), p2(1, 1)}, {p2(1, 0), p2(0, 1)})));
+  EXPECT_FALSE((relative_interiors_meet<Exact, 2>({p2(0, 0), p2(1, 1)}, {p2(1, 1), p2(2, 0)})));
+  EXPECT_TRUE((closed_simplices_meet<Exact, 2>({p2(0, 0), p2(1, 1)}, {p2(1, 1), p2(2, 0)})));
+  EXPECT_TRUE((relative_interiors_meet<Exact, 2>({p2(0, 0), p2(2, 0)}, {p2(1, 0), p2(3, 0)})));
+  // A vertex in the middle of an edge (Fig. 2.7).
+  EXPECT_TRUE((relative_interiors_meet<Exact, 2>({p2(0, 0), p2(2, 0)}, {p2(1, 0)})));
+  // 3D: a segment piercing a triangle, and one passing beside it.
+  EXPECT_TRUE((relative_interiors_meet<Exact, 3>({p3(0, 0, 0), p3(4, 0, 0), p3(0, 4, 0)},
+                                                 {p3(1, 1, -1), p3(1, 1, 1)})));
+  EXPECT_FALSE((relative_interiors_meet<Exact, 3>({p3(0, 0, 0), p3(4, 0, 0), p3(0, 4, 0)},
+                                                  {p3(5, 5, -1), p3(5, 5, 1)})));
+}
+
+TEST(ElementComplex, SplitSquareIsAMeshAndBoundaryIsFound) {
+  const auto m = split_square(Exact(1) / 3, Exact(2) / 3);
+  std::ostringstream why;
+  EXPECT_TRUE(is_mesh(m, &why)) << why.str();
+  const auto b = mesh_boundary(m);
+  EXPECT_EQ(b.elements_of_dimension(1).size(), 6u);
+  EXPECT_EQ(b.elements_of_dimension(0).size(), 6u);
+}
+
+TEST(ElementComplex, DanglingAndNonFaceCompleteAreDetected) {
+  auto m = split_square(Exact(1) / 3, Exact(2) / 3);
+  m.elements.push_back(Simplex{0, 3}); // the other diagonal: crosses, and has no co-face cell
+  m.normalize();
+  EXPECT_FALSE(has_no_dangling_elements(m));
+  EXPECT_FALSE(is_conforming(m));
+  ElementComplex<Exact, 2> t;
+  t.points = {p2(0, 0), p2(1, 0), p2(0, 1)};
+  t.elements = {Simplex{0, 1, 2}};
+  EXPECT_FALSE(is_face_complete(t));
+}
+
+TEST(ElementComplex, CoveredByIsExact) {
+  const auto m = split_square(Exact(1) / 3, Exact(2) / 3);
+  EXPECT_TRUE((simplex_covered_by<Exact, 2>({p2(0, 0), p2(1, 1)}, m)));
+  EXPECT_TRUE((simplex_covered_by<Exact, 2>({p2(0, 0), p2(1, 0), p2(1, 1)}, m)));
+  EXPECT_FALSE((simplex_covered_by<Exact, 2>({p2(0, 0), p2(2, 0)}, m)));
+  EXPECT_FALSE((simplex_covered_by<Exact, 2>({p2(0, 0), p2(2, 0), p2(0, 1)}, m)));
+  EXPECT_TRUE((simplex_covered_by<Exact, 2>({p2q(1, 2, 0, 1)}, m)));
+}
+
+TEST(TemplatedStructure, ReflectionGivesATemplatedMesh) {
+  // Template on x >= 0 touching x = 0 along a split edge; instances I and refl about x = 0.
+  const auto m = complex2({p2(0, 0), p2(0, 1), p2(0, 2), p2(1, 0), p2(1, 2)},
+                          {{0, 1, 3}, {1, 3, 4}, {1, 2, 4}});
+  const auto x = one_template(m, {T2(), T2::reflection(p2(1, 0), Exact(0))});
+  const auto r = analyse(x);
+  EXPECT_TRUE(r.templated_structure);
+  EXPECT_TRUE(r.templated_mesh);
+  EXPECT_TRUE(r.lemma42.holds);
+  EXPECT_EQ(r.graph_edges.size(), 2u); // trivial loop + the self-interface
+}
+
+TEST(TemplatedStructure, TranslationWithMismatchedSplitsFailsLemma42) {
+  // Fig. 4.4: bottom edge split at 1/3, top edge at 2/3; stacking by translation (0, 1).
+  const auto m = split_square(Exact(1) / 3, Exact(2) / 3);
+  const auto x = one_template(m, {T2(), T2::translation(p2(0, 1))});
+  const auto r = analyse(x);
+  EXPECT_TRUE(r.templated_structure);
+  EXPECT_FALSE(r.templated_mesh);
+  EXPECT_FALSE(r.lemma42.holds);
+  EXPECT_EQ(r.lemma42.condition, 1);
+  EXPECT_TRUE(r.lemma42_agrees);
+  // Matching splits conform.
+  const auto ok = analyse(one_template(split_square(Exact(1) / 3, Exact(1) / 3),
+                                       {T2(), T2::translation(p2(0, 1))}));
+  EXPECT_TRUE(ok.templated_mesh);
+  EXPECT_TRUE(ok.lemma42.holds);
+}
+
+TEST(TemplatedStructure, OverlapViolatesEq42) {
+  const auto m = split_square(Exact(1) / 3, Exact(1) / 3);
+  const auto r = analyse(one_template(m, {T2(), T2::translation(p2q(1, 2, 0, 1))}));
+  EXPECT_FALSE(r.templated_structure);
+  ASSERT_TRUE(r.overlap.has_value());
+}
+
+TEST(Delaunay, SquareDiagonalIsDelaunayButNotStrongly) {
+  // Four cocircular points: both diagonals are Delaunay, neither strongly Delaunay.
+  const auto m = complex2({p2(0, 0), p2(1, 0), p2(1, 1), p2(0, 1)}, {{0, 1, 2}, {0, 2, 3}});
+  EXPECT_TRUE(is_delaunay_mesh(m));
+  EXPECT_TRUE(is_locally_delaunay_in(m, Simplex{0, 2}));
+  EXPECT_FALSE(is_strongly_delaunay_in(m, Simplex{0, 2}));
+  // A flat quadrilateral with the long diagonal is not Delaunay.
+  const auto bad = complex2({p2(0, 0), p2(2, -1), p2(4, 0), p2(2, 1)}, {{0, 1, 2}, {0, 2, 3}});
+  EXPECT_FALSE(is_delaunay_mesh(bad));
+  EXPECT_FALSE(is_locally_delaunay_in(bad, Simplex{0, 2}));
+}
+
+TEST(Respect, TriangleAndCuttingLine) {
+  const std::vector<P2> tri{p2(0, 0), p2(4, 0), p2(0, 4)};
+  EXPECT_TRUE((respects<Exact, 2>(tri, {tri})));
+  EXPECT_FALSE((respects<Exact, 2>(tri, {{p2(1, -1), p2(1, 5)}})));
+  EXPECT_TRUE((respects<Exact, 2>(tri, {{p2(-1, 0), p2(5, 0)}}))); // along an edge
+}
