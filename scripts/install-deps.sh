@@ -13,6 +13,11 @@ PACKAGES=(
   python3-meshio
 )
 
+# Optional groups: --fuzz adds clang-14 and its libFuzzer/sanitizer runtime (fuzz/run.sh).
+if [ "${1:-}" = "--fuzz" ]; then
+  PACKAGES+=(clang-14 libclang-rt-14-dev)
+fi
+
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then

@@ -171,3 +171,40 @@ TEST(Respect, TriangleAndCuttingLine) {
   EXPECT_FALSE((respects<Exact, 2>(tri, {{p2(1, -1), p2(1, 5)}})));
   EXPECT_TRUE((respects<Exact, 2>(tri, {{p2(-1, 0), p2(5, 0)}}))); // along an edge
 }
+
+#include "symmesh/core/geometry_conforming.h"
+#include "symmesh/core/restricted_transformation.h"
+
+TEST(GeometryConformity, RefinedSquareConformsToCoarseSquare) {
+  const auto fine = split_square(Exact(1) / 3, Exact(2) / 3);
+  const auto coarse = complex2({p2(0, 0), p2(1, 0), p2(1, 1), p2(0, 1)}, {{0, 1, 2}, {0, 2, 3}});
+  EXPECT_TRUE(geometry_conforms(fine, coarse));
+  const auto half = complex2({p2(0, 0), p2(1, 0), p2(1, 1)}, {{0, 1, 2}});
+  EXPECT_FALSE(geometry_conforms(fine, half));
+}
+
+TEST(GeometryConformity, TemplatedMeshOfTemplatedGeometry) {
+  const auto fine = split_square(Exact(1) / 3, Exact(1) / 3);
+  const auto coarse = complex2({p2(0, 0), p2(1, 0), p2(1, 1), p2(0, 1)}, {{0, 1, 2}, {0, 2, 3}});
+  auto gamma = one_template(fine, {T2(), T2::translation(p2(0, 1))});
+  auto lambda = one_template(coarse, {T2(), T2::translation(p2(0, 1))});
+  lambda.templates[0].kind = TemplateKind::geometry;
+  EXPECT_TRUE(is_geometry_conforming(gamma, lambda));
+  lambda.instances[0][1].region = 2;
+  EXPECT_FALSE(is_geometry_conforming(gamma, lambda));
+}
+
+TEST(RestrictedTransformation, AgreementOnADomain) {
+  // The reflection about x = 0 and the identity agree exactly on the segment x = 0.
+  ElementComplex<Exact, 2> seg;
+  seg.points = {p2(0, 0), p2(0, 1)};
+  seg.elements = {Simplex{0}, Simplex{1}, Simplex{0, 1}};
+  const auto r = T2::reflection(p2(1, 0), Exact(0));
+  EXPECT_TRUE(agree_on(r, T2(), seg));
+  seg.points[1] = p2(1, 1);
+  EXPECT_FALSE(agree_on(r, T2(), seg));
+  RestrictedTransformation<Exact, 2> f{T2::translation(p2(2, 0)), seg};
+  EXPECT_EQ(f(p2q(1, 2, 1, 2)), p2q(5, 2, 1, 2));
+  EXPECT_THROW(f(p2(5, 5)), std::domain_error);
+  EXPECT_EQ(f.inverse()(p2q(5, 2, 1, 2)), p2q(1, 2, 1, 2));
+}

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# symmesh lemmas as a user tool: passes on valid generators, catches dropped hypotheses and writes
+# counterexamples that `symmesh check` itself classifies as non-conforming.
+source "$(dirname "$0")/common.sh" "$@"
+
+expect_exit 0 "lemmas --list" -- "$BIN" lemmas --list
+n=$(wc -l < "$TMP/stdout")
+[ "$n" -ge 20 ] && pass "$n properties listed" || fail "only $n properties listed"
+expect_exit 0 "Lemma 4.2 passes (40 cases)" -- "$BIN" lemmas --cases 40 --only Lemma_4_2 --quiet --out "$TMP/ce"
+grep -qE '^[0-9]+ passed, 0 failed$' "$TMP/stdout" && pass "closing line" || fail "closing line missing"
+expect_exit 0 "dropped hypothesis of Lemma 4.2 is caught" -- "$BIN" lemmas --cases 40 --only Lemma_4_2 --drop-hypothesis --quiet --out "$TMP/ce"
+grep -q caught "$TMP/stdout" && ! grep -q MISSED "$TMP/stdout" && pass "every check caught" || fail "a dropped hypothesis was missed"
+ce=$(ls "$TMP"/ce/Lemma_4_2_*_dropped.json 2>/dev/null | head -1)
+if [ -n "$ce" ]; then
+  pass "counterexample written: $(basename "$ce")"
+  expect_exit 1 "symmesh check classifies the shrunk counterexample as not a templated mesh" -- "$BIN" check "$ce"
+  svg="${ce%.json}.svg"
+  if [ -s "$svg" ] || grep -q '"dimension": 3' "$ce"; then pass "SVG for 2D counterexample"; else fail "no SVG next to $ce"; fi
+else
+  fail "no counterexample JSON written"
+fi
+expect_exit 2 "unknown lemma" -- "$BIN" lemmas --only Lemma_9_9
+expect_exit 2 "bad --dim" -- "$BIN" lemmas --dim 4
+finish
