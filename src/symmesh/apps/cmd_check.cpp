@@ -22,16 +22,7 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& o) {
   core::StructureReport r;
-  try {
-    r = analyse_file(o.file);
-  } catch (const io::InputError& e) {
-    print_error(e.what());
-    return bad_input;
-  }
-  if (!r.well_formed) {
-    print_error(o.file + ": " + r.error);
-    return bad_input;
-  }
+  if (!load_well_formed(o.file, r)) return bad_input;
   if (o.json)
     std::cout << io::report_to_json(r);
   else

@@ -14,13 +14,8 @@ struct GraphOptions {
 
 int run_graph(const GraphOptions& o) {
   core::StructureReport r;
-  try {
-    r = analyse_file(o.file);
-  } catch (const io::InputError& e) {
-    print_error(e.what());
-    return bad_input;
-  }
-  if (!r.well_formed || !r.templated_structure) {
+  if (!load_well_formed(o.file, r)) return bad_input;
+  if (!r.templated_structure) {
     print_error(o.file + ": " + r.error);
     return bad_input;
   }

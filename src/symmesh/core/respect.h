@@ -28,35 +28,39 @@ bool relint_meets_convex(const std::vector<Point<FT, D>>& f, const ConvexInterse
   return common_point<FT, D>(groups).strict_meet;
 }
 
-/// E respects X = ⋂ conv(x_j).
-template <class FT, int D>
-bool respects(const std::vector<Point<FT, D>>& e, const ConvexIntersection<FT, D>& x) {
+/// The respect test of spec/definitions.md#respect-by-faces: E respects a closed X iff every face
+/// f of E is inside X or has a relative interior disjoint from X.
+template <class FT, int D, class Inside, class RelintMeets>
+bool respects_by_faces(const std::vector<Point<FT, D>>& e, Inside&& inside, RelintMeets&& meets) {
   std::vector<VertexId> ids(e.size());
   for (std::size_t i = 0; i < e.size(); ++i) ids[i] = VertexId(i);
   const Simplex s = Simplex::from_range(ids.data(), ids.data() + ids.size());
   for (const auto& f : faces(s)) {
     std::vector<Point<FT, D>> fp;
     for (VertexId v : f) fp.push_back(e[v]);
-    if (face_inside_convex<FT, D>(fp, x)) continue;
-    if (relint_meets_convex<FT, D>(fp, x)) return false;
+    if (!inside(fp) && meets(fp)) return false;
   }
   return true;
 }
 
-/// E respects X = us(M), M a face-complete conforming complex. \pre DIM(E) <= 2
+/// E respects X = ⋂ conv(x_j).
+template <class FT, int D>
+bool respects(const std::vector<Point<FT, D>>& e, const ConvexIntersection<FT, D>& x) {
+  return respects_by_faces<FT, D>(
+      e, [&](const auto& f) { return face_inside_convex<FT, D>(f, x); },
+      [&](const auto& f) { return relint_meets_convex<FT, D>(f, x); });
+}
+
+/// E respects X = us(M), M a face-complete conforming complex. \pre DIM(E) <= 2 or E is a cell
 template <class FT, int D>
 bool respects_underlying_space(const std::vector<Point<FT, D>>& e, const ElementComplex<FT, D>& m) {
-  std::vector<VertexId> ids(e.size());
-  for (std::size_t i = 0; i < e.size(); ++i) ids[i] = VertexId(i);
-  const Simplex s = Simplex::from_range(ids.data(), ids.data() + ids.size());
-  for (const auto& f : faces(s)) {
-    std::vector<Point<FT, D>> fp;
-    for (VertexId v : f) fp.push_back(e[v]);
-    if (simplex_covered_by<FT, D>(fp, m)) continue;
-    for (const auto& g : m.elements)
-      if (relative_interiors_meet<FT, D>(fp, m.coords(g))) return false;
-  }
-  return true;
+  return respects_by_faces<FT, D>(
+      e, [&](const auto& f) { return simplex_covered_by<FT, D>(f, m); },
+      [&](const auto& f) {
+        for (const auto& g : m.elements)
+          if (relative_interiors_meet<FT, D>(f, m.coords(g))) return true;
+        return false;
+      });
 }
 
 } // namespace symmesh::core
