@@ -208,3 +208,43 @@ TEST(RestrictedTransformation, AgreementOnADomain) {
   EXPECT_THROW(f(p2(5, 5)), std::domain_error);
   EXPECT_EQ(f.inverse()(p2q(5, 2, 1, 2)), p2q(1, 2, 1, 2));
 }
+
+#include <random>
+
+namespace {
+/// Random simplices on a tiny integer grid, so that shared, collinear and coplanar vertices
+/// are frequent; fixed seed.
+template <int D>
+std::vector<Point<Exact, D>> random_simplex(std::mt19937& rng) {
+  std::uniform_int_distribution<int> coord(0, 2), count(1, D + 1);
+  for (;;) {
+    std::vector<Point<Exact, D>> s(count(rng));
+    for (auto& p : s)
+      for (int d = 0; d < D; ++d) p[d] = Exact(coord(rng));
+    if (affinely_independent<Exact, D>(s)) return s;
+  }
+}
+
+template <int D>
+void separation_filters_agree_with_lp() {
+  std::mt19937 rng(20261122);
+  int separated = 0, meeting = 0;
+  for (int k = 0; k < 1500; ++k) {
+    const auto a = random_simplex<D>(rng), b = random_simplex<D>(rng);
+    const auto lp = common_point<Exact, D>({{a, true}, {b, true}});
+    if (weakly_separated<Exact, D>(a, b)) {
+      ++separated;
+      ASSERT_FALSE(lp.strict_meet) << "weak separation claimed for meeting relative interiors";
+    }
+    if (strictly_separated<Exact, D>(a, b)) {
+      ASSERT_FALSE(lp.closed_meet) << "strict separation claimed for meeting simplices";
+    }
+    meeting += lp.strict_meet;
+  }
+  EXPECT_GT(separated, 100); // the filter does real work
+  EXPECT_GT(meeting, 100);   // and the sample has both outcomes
+}
+} // namespace
+
+TEST(Predicates, SeparationFiltersNeverContradictTheExactLP2D) { separation_filters_agree_with_lp<2>(); }
+TEST(Predicates, SeparationFiltersNeverContradictTheExactLP3D) { separation_filters_agree_with_lp<3>(); }

@@ -15,6 +15,7 @@
 #include "symmesh/core/simplex.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 #include <ostream>
@@ -103,11 +104,89 @@ bool point_in_simplex(const std::vector<Point<FT, D>>& b, const Point<FT, D>& x)
   return true;
 }
 
+namespace detail {
+/// Normals of candidate separating hyperplanes through point p_i of a ∪ b: spanned by other
+/// points, or containing an edge and a coordinate direction, or orthogonal to an edge. Cheap
+/// exact certificates; the LP decides whatever they do not certify.
+template <class FT, int D, class F>
+bool for_each_candidate_plane(const std::vector<Point<FT, D>>& pts, F&& test) {
+  const std::size_t n = pts.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Point<FT, D> u = pts[j] - pts[i];
+      if (test(pts[i], u)) return true; // hyperplane through p_i orthogonal to the edge
+      if constexpr (D == 2) {
+        if (test(pts[i], Point<FT, 2>{{-u[1], u[0]}})) return true;
+      } else {
+        for (int k = 0; k < 3; ++k) { // contains the edge and coordinate direction e_k
+          Point<FT, 3> nk{{FT(0), FT(0), FT(0)}};
+          const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+          nk[k1] = u[k2];
+          nk[k2] = -u[k1];
+          if (test(pts[i], nk)) return true;
+        }
+        for (std::size_t l = j + 1; l < n; ++l) {
+          const Point<FT, 3> w = pts[l] - pts[i];
+          const Point<FT, 3> nn{{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                                 u[0] * w[1] - u[1] * w[0]}};
+          if (test(pts[i], nn)) return true;
+        }
+      }
+    }
+  return false;
+}
+
+/// Signs of n·(x - p) over a point set: -1/0/+1 presence flags.
+template <class FT, int D>
+std::array<bool, 3> side_flags(const std::vector<Point<FT, D>>& x, const Point<FT, D>& p,
+                               const Point<FT, D>& n) {
+  std::array<bool, 3> f{false, false, false};
+  for (const auto& q : x) {
+    const FT s = dot<FT, D>(n, q - p);
+    f[s < 0 ? 0 : (s > 0 ? 2 : 1)] = true;
+  }
+  return f;
+}
+} // namespace detail
+
+/// A hyperplane puts a and b in opposite closed half-spaces without containing both: then
+/// relint(a) ∩ relint(b) = ∅ (a convex set in a closed half-space, not inside its boundary, has
+/// its relative interior in the open half-space).
+template <class FT, int D>
+bool weakly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
+  std::vector<Point<FT, D>> pts = a;
+  pts.insert(pts.end(), b.begin(), b.end());
+  return detail::for_each_candidate_plane<FT, D>(pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+    bool nonzero = false;
+    for (int d = 0; d < D; ++d) nonzero = nonzero || n[d] != 0;
+    if (!nonzero) return false;
+    const auto fa = detail::side_flags<FT, D>(a, p, n);
+    const auto fb = detail::side_flags<FT, D>(b, p, n);
+    const bool a_in_plane = !fa[0] && !fa[2], b_in_plane = !fb[0] && !fb[2];
+    if (a_in_plane && b_in_plane) return false;
+    return (!fa[2] && !fb[0]) || (!fa[0] && !fb[2]);
+  });
+}
+
+/// A hyperplane puts a and b in opposite half-spaces, one of them open: conv a ∩ conv b = ∅.
+template <class FT, int D>
+bool strictly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
+  std::vector<Point<FT, D>> pts = a;
+  pts.insert(pts.end(), b.begin(), b.end());
+  return detail::for_each_candidate_plane<FT, D>(pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+    const auto fa = detail::side_flags<FT, D>(a, p, n);
+    const auto fb = detail::side_flags<FT, D>(b, p, n);
+    const bool a_neg = !fa[2], a_pos = !fa[0], b_neg = !fb[2], b_pos = !fb[0];
+    return (a_neg && b_pos && (!fa[1] || !fb[1])) || (a_pos && b_neg && (!fa[1] || !fb[1]));
+  });
+}
+
 /// relint(conv a) ∩ relint(conv b) ≠ ∅, decided exactly.
 template <class FT, int D>
 bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
                              const std::vector<Point<FT, D>>& b) {
   if (a.size() == 1 && b.size() == 1) return a[0] == b[0];
+  if (weakly_separated<FT, D>(a, b)) return false;
   if (a.size() == 1) {
     auto mu = barycentric<FT, D>(b, a[0]);
     return mu && std::all_of(mu->begin(), mu->end(), [](const FT& v) { return v > 0; });
@@ -120,6 +199,7 @@ bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
 template <class FT, int D>
 bool closed_simplices_meet(const std::vector<Point<FT, D>>& a,
                            const std::vector<Point<FT, D>>& b) {
+  if (strictly_separated<FT, D>(a, b)) return false;
   return common_point<FT, D>({{a, false}, {b, false}}).closed_meet;
 }
 
