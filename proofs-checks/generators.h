@@ -1,0 +1,255 @@
+/// RapidCheck generators of meshes and templated structures — spec/traceability.md#generators
+///
+/// Tiered by precondition, as the proofs-checks need them:
+///   valid_templated_mesh ⊂ templated_structure ⊂ any_structure.
+/// Every coordinate is an exact rational with a small denominator on a coarse grid, so that
+/// collinear / coplanar / cocircular points and shared faces are common rather than rare. All
+/// generators are built with rc::gen::exec from integer picks, so RapidCheck shrinks the picks
+/// (fewer points, smaller numbers, no global motion) and every case is reproducible from the
+/// seed the runner prints. Each generated value carries the recipe that built it; the recipe is
+/// what RapidCheck prints for a failing case.
+#pragma once
+#include <rapidcheck.h>
+
+#include "symmesh/core/kernel.h"
+#include "symmesh/core/multi_region_mesh.h"
+#include "symmesh/core/templated_structure.h"
+
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace symmesh::proofs::gen {
+
+using symmesh::Exact;
+template <int D>
+using Point = core::Point<Exact, D>;
+template <int D>
+using Complex = core::ElementComplex<Exact, D>;
+template <int D>
+using Structure = core::TemplatedStructure<Exact, D>;
+template <int D>
+using Motion = core::RigidTransformation<Exact, D>;
+template <int D>
+using MultiRegion = core::MultiRegionMesh<Exact, D>;
+template <int D>
+using PointSet = std::vector<Point<D>>;
+
+/// A generated value and the recipe that made it.
+template <class T>
+struct Described {
+  T value;
+  std::string recipe;
+};
+template <class T>
+std::ostream& operator<<(std::ostream& os, const Described<T>& d) {
+  return os << d.recipe;
+}
+
+/// What a structure generator guarantees by construction (the tiers of the design brief).
+enum class Tier { valid_templated_mesh, templated_structure, any };
+
+template <int D>
+struct GeneratedStructure {
+  Structure<D> x;
+  std::string recipe;
+  Tier tier = Tier::any;
+  /// us(AT(x)) is convex, so AT(x) triangulates its vertex set (needed by Lemmas 2.5 / 4.5).
+  bool convex = false;
+};
+template <int D>
+std::ostream& operator<<(std::ostream& os, const GeneratedStructure<D>& s) {
+  return os << s.recipe;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Chapter 2: simplex meshes of point sets
+// ---------------------------------------------------------------------------------------------
+
+/// A triangulation of a random point set (Def 2.8: us = conv(points)): exact Delaunay, or a
+/// regular triangulation with random weights (usually not Delaunay). Hidden points are dropped.
+template <int D>
+rc::Gen<Described<Complex<D>>> triangulation();
+template <int D>
+rc::Gen<Described<Complex<D>>> delaunay_triangulation();
+template <int D>
+rc::Gen<Described<Complex<D>>> regular_triangulation();
+
+/// Two meshes whose union is conforming: sub-meshes (of any cell dimension <= D) of one
+/// triangulation, the second over its own relabelled point array (Lemma 2.1 iv hypothesis).
+template <int D>
+rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>> meshes_with_conforming_union();
+
+/// Two meshes whose union is not conforming: Figure 2.7 (a line and a vertex at a random
+/// interior rational point of it) or two different triangulations of one point set.
+template <int D>
+rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>> meshes_with_nonconforming_union();
+
+/// A face-complete complex without dangling elements that is not conforming: the element union
+/// of two different triangulations of the same point set.
+template <int D>
+rc::Gen<Described<Complex<D>>> nonconforming_complex();
+
+/// A mesh missing one facet of one of its cells (not face-complete).
+template <int D>
+rc::Gen<Described<Complex<D>>> non_face_complete_complex();
+
+/// A multi-region mesh: a triangulation with region ids 1..3 by hyperplane side or at random.
+template <int D>
+rc::Gen<Described<MultiRegion<D>>> multi_region_mesh();
+
+/// A non-conforming "multi-region mesh" whose region 1 holds a violating pair.
+template <int D>
+rc::Gen<Described<MultiRegion<D>>> nonconforming_multi_region();
+
+/// Lemma 2.3: a simplex E and two convex sets A = conv(a), B = conv(b).
+template <int D>
+struct RespectCase {
+  PointSet<D> e, a, b;
+};
+/// E respects A and E respects B (checked exactly while generating).
+template <int D>
+rc::Gen<Described<RespectCase<D>>> respect_both();
+/// E respects A but not B: B is a simplex with a facet hyperplane through an interior point
+/// of E, so that E ∩ (A ∩ B) cuts E's interior.
+template <int D>
+rc::Gen<Described<RespectCase<D>>> respect_one_only();
+
+/// Lemma 2.4: a mesh with independent descriptions of the geometry it conforms to.
+template <int D>
+struct GeometryCase {
+  Complex<D> mesh;              ///< M, a triangulation of `points`
+  PointSet<D> points;           ///< G = conv(points) = us(M)
+  Complex<D> other_mesh;        ///< another triangulation of `points`: G = us(other_mesh)
+  MultiRegion<D> multi;         ///< (M', ξ) from a reflected template (two convex regions)
+  std::vector<int> region_ids;  ///< the region ids of `multi`
+  std::vector<PointSet<D>> region_hulls; ///< region(G, i) = conv(region_hulls[k])
+};
+template <int D>
+rc::Gen<Described<GeometryCase<D>>> geometry_conforming_case();
+
+/// Lemma 2.4 dropped: a triangulation M of `points` and a convex G = conv(points) ∩ conv(cut)
+/// whose boundary hyperplane passes through the interior of a cell: us(M) != G.
+template <int D>
+struct NonConformingGeometryCase {
+  Complex<D> mesh;
+  PointSet<D> points;
+  PointSet<D> cut;
+};
+template <int D>
+rc::Gen<Described<NonConformingGeometryCase<D>>> geometry_not_conforming_case();
+
+/// Lemma 2.5 / 4.5 dropped (convexity): a flat simplex and its reflection across a hyperplane
+/// through one vertex, tilted by a small rational slope. The two instances touch in that vertex,
+/// every facet is locally Delaunay, yet the flat simplex's circumball holds the mirror's vertices.
+template <int D>
+rc::Gen<GeneratedStructure<D>> flat_simplex_v_shape();
+
+// ---------------------------------------------------------------------------------------------
+// Chapters 4 and 6: templated structures
+// ---------------------------------------------------------------------------------------------
+
+/// Lemma 6.1: a triangulated template on the positive side n·x >= d of a rational hyperplane
+/// (several points exactly on it, or only one, or none), instances I and refl_{n,d}.
+template <int D>
+rc::Gen<GeneratedStructure<D>> reflective_structure();
+
+/// Lemma 6.1 dropped: the template has a cell with vertices strictly on both sides of H.
+template <int D>
+rc::Gen<GeneratedStructure<D>> crossing_reflective_structure();
+
+/// Lemma 6.2 / Algorithm 6.4: a template in the positive orthant of k (2 <= k <= D) pairwise
+/// orthogonal rational hyperplanes, instanced by all 2^k compositions of the reflections.
+template <int D>
+struct OrthogonalReflections {
+  GeneratedStructure<D> s;
+  std::vector<Point<D>> normals;
+  std::vector<Exact> offsets;
+};
+template <int D>
+std::ostream& operator<<(std::ostream& os, const OrthogonalReflections<D>& o) {
+  return os << o.s.recipe;
+}
+template <int D>
+rc::Gen<OrthogonalReflections<D>> orthogonal_reflections();
+
+/// Lemma 6.2 dropped: two rational reflective symmetries at 45 degrees (the square group, 8
+/// instances of a template in the wedge 0 <= y <= x), normals[0] = (1, 0), normals[1] ⟂ x = y.
+template <int D>
+rc::Gen<OrthogonalReflections<D>> non_orthogonal_reflections();
+
+/// A translation grid of a box template whose opposite sides carry identical subdivisions
+/// (2D: Delaunay / regular triangulation of a box with subdivided sides; 3D: a stack of
+/// triangular prisms, or Kuhn-subdivided boxes whose opposite faces carry translated diagonals).
+template <int D>
+rc::Gen<GeneratedStructure<D>> translation_grid();
+
+/// Figure 4.4: a translated box template whose interface side (face) is subdivided differently
+/// from the opposite one: a templated structure whose structure instance is not conforming
+/// (3D: the 5-tetrahedron box, whose opposite faces carry crossing diagonals, or a square pyramid
+/// and its half turn about an axis in the base plane, which meet with crossing base diagonals).
+template <int D>
+rc::Gen<GeneratedStructure<D>> figure_4_4_structure();
+
+/// Lemma 4.5: a templated mesh with convex us(AT) whose template facets are all template-aware
+/// locally Delaunay (Delaunay templates, interface facets not encroached).
+template <int D>
+rc::Gen<GeneratedStructure<D>> delaunay_templated_mesh();
+
+/// Lemma 4.5 dropped (template-aware locally Delaunay): a flat simplex reflected across its own
+/// long facet; the instance interface facet is not locally Delaunay in AT.
+template <int D>
+rc::Gen<GeneratedStructure<D>> encroached_reflection();
+
+/// Tiers. valid: reflective, orthogonal reflections, translation grids, each possibly split into
+/// 2-3 templates by cell centroid and moved by one global rigid motion. structure: valid plus
+/// Figure 4.4 families. any: structure plus overlapping instances (Eq. 4.2 violated).
+template <int D>
+rc::Gen<GeneratedStructure<D>> valid_templated_mesh();
+template <int D>
+rc::Gen<GeneratedStructure<D>> templated_structure();
+template <int D>
+rc::Gen<GeneratedStructure<D>> any_structure();
+
+/// AT equivalence dropped ("templates are meshes"): a valid structure whose templates have lost
+/// their lower-dimensional faces (not face-complete), so AT is conforming but not a mesh.
+template <int D>
+rc::Gen<GeneratedStructure<D>> non_mesh_template_structure();
+
+// ---------------------------------------------------------------------------------------------
+// Shared helpers for the lemma files (no RapidCheck inside)
+// ---------------------------------------------------------------------------------------------
+
+/// Text of an exact number, "n" or "n/d".
+std::string text(const Exact& x);
+template <int D>
+std::string text(const Point<D>& p);
+
+/// The complex of one simplex given by its vertices (all faces included).
+template <int D>
+Complex<D> simplex_complex(const PointSet<D>& vertices);
+
+/// "_2d" / "_3d", for property names.
+inline std::string dim_suffix(int dimension) { return dimension == 2 ? "_2d" : "_3d"; }
+
+// ---------------------------------------------------------------------------------------------
+// Failure records (SYMMESH_PROOF_ASSERT producers; called only when an assertion fails)
+// ---------------------------------------------------------------------------------------------
+
+/// {"lemma", "recipe", "structure": <templated-structure JSON>} — the structure part can be
+/// read back with `symmesh check`.
+template <int D>
+std::string structure_record(const std::string& lemma, const std::string& recipe, const Structure<D>& x);
+/// The structure instance drawn as SVG (2D), or "" (3D).
+template <int D>
+std::string structure_picture(const Structure<D>& x);
+/// {"lemma", "recipe", "complexes": {name: <complex JSON>}}.
+template <int D>
+std::string complexes_record(const std::string& lemma, const std::string& recipe,
+                             const std::vector<std::pair<std::string, Complex<D>>>& parts);
+/// The complex drawn as SVG (2D), or "" (3D).
+template <int D>
+std::string complex_picture(const Complex<D>& c);
+
+} // namespace symmesh::proofs::gen
