@@ -1748,10 +1748,9 @@ nlohmann::json embedded(const std::string& text) {
 
 template <int D>
 std::string structure_record(const std::string& lemma, const std::string& recipe, const Structure<D>& x) {
-  nlohmann::json j;
-  j["lemma"] = lemma;
-  j["recipe"] = recipe;
-  j["structure"] = embedded(io::to_json(x));
+  // The templated-structure format itself, so that `symmesh check FILE` reads the counterexample.
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(io::to_json(x));
+  j["description"] = "counterexample of " + lemma + " (" + recipe + ")";
   return j.dump(1);
 }
 

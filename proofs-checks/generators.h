@@ -237,8 +237,8 @@ inline std::string dim_suffix(int dimension) { return dimension == 2 ? "_2d" : "
 // Failure records (SYMMESH_PROOF_ASSERT producers; called only when an assertion fails)
 // ---------------------------------------------------------------------------------------------
 
-/// {"lemma", "recipe", "structure": <templated-structure JSON>} — the structure part can be
-/// read back with `symmesh check`.
+/// The templated-structure JSON of x with "description" naming the lemma and the recipe; it can
+/// be read back with `symmesh check`.
 template <int D>
 std::string structure_record(const std::string& lemma, const std::string& recipe, const Structure<D>& x);
 /// The structure instance drawn as SVG (2D), or "" (3D).
