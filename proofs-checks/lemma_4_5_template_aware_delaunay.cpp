@@ -11,6 +11,7 @@
 // every facet is template-aware locally Delaunay, AT is not Delaunay), the other drops the
 // template-aware locally Delaunay property (a flat simplex mirrored across its own base facet).
 #include "proofs-checks/generators.h"
+#include "symmesh/core/template_aware_delaunay.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/core/delaunay.h"
 #include "symmesh/core/interface_conformity.h"
@@ -34,16 +35,7 @@ auto picture(const GeneratedStructure<D>& s) {
 /// Def 4.10 for every facet of every template: T_{i,g}(E) is locally Delaunay in AT(Γ).
 template <int D>
 bool all_template_facets_tald(const Structure<D>& x, const core::StructureInstance<Exact, D>& si) {
-  for (std::size_t k = 0; k < si.ids.size(); ++k) {
-    const auto& tmpl = x.templates[si.ids[k].i].mesh;
-    for (const auto& f : tmpl.elements_of_dimension(D - 1)) {
-      std::vector<core::VertexId> g;
-      for (core::VertexId v : f) g.push_back(si.vertex_map[k][v]);
-      if (!core::is_locally_delaunay_in(si.at.mesh, core::Simplex::from_range(g.data(), g.data() + g.size())))
-        return false;
-    }
-  }
-  return true;
+  return core::all_template_facets_template_aware_locally_delaunay(x, si);
 }
 
 template <int D>
