@@ -17,14 +17,12 @@ using namespace gen;
 
 constexpr const char* kLemma = "AT_multi_region_equivalence";
 
+/// Failure records of this lemma's generated structures (see generators.h).
 template <int D>
 auto record(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_record<D>(kLemma, s.recipe, s.x); };
+  return structure_failure_record<D>(kLemma, s);
 }
-template <int D>
-auto picture(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_picture<D>(s.x); };
-}
+using gen::picture;
 
 template <int D>
 void equivalence(const GeneratedStructure<D>& s) {

@@ -244,6 +244,16 @@ std::string structure_record(const std::string& lemma, const std::string& recipe
 /// The structure instance drawn as SVG (2D), or "" (3D).
 template <int D>
 std::string structure_picture(const Structure<D>& x);
+
+/// Producers for SYMMESH_PROOF_ASSERT on a generated structure: called only on failure.
+template <int D>
+auto structure_failure_record(const char* lemma, const GeneratedStructure<D>& s) {
+  return [lemma, &s] { return structure_record<D>(lemma, s.recipe, s.x); };
+}
+template <int D>
+auto picture(const GeneratedStructure<D>& s) {
+  return [&s] { return structure_picture<D>(s.x); };
+}
 /// {"lemma", "recipe", "complexes": {name: <complex JSON>}}.
 template <int D>
 std::string complexes_record(const std::string& lemma, const std::string& recipe,

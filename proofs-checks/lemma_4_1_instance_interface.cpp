@@ -19,14 +19,12 @@ using core::Simplex;
 
 constexpr const char* kLemma = "Lemma_4_1";
 
+/// Failure records of this lemma's generated structures (see generators.h).
 template <int D>
 auto record(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_record<D>(kLemma, s.recipe, s.x); };
+  return structure_failure_record<D>(kLemma, s);
 }
-template <int D>
-auto picture(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_picture<D>(s.x); };
-}
+using gen::picture;
 
 /// E respects X = us(A) ∩ us(B) for face-complete conforming A, B: every face f of E has
 /// f ⊆ X (covered by both) or relint(f) ∩ X = ∅ (no g ∈ A, h ∈ B with relint(f) ∩ g ∩ h ≠ ∅).

@@ -20,14 +20,12 @@ using namespace gen;
 
 constexpr const char* kLemma = "Lemma_4_2";
 
+/// Failure records of this lemma's generated structures (see generators.h).
 template <int D>
 auto record(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_record<D>(kLemma, s.recipe, s.x); };
+  return structure_failure_record<D>(kLemma, s);
 }
-template <int D>
-auto picture(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_picture<D>(s.x); };
-}
+using gen::picture;
 
 /// The conclusion: AT(Γ) is conforming (that this makes it a multi-region mesh is checked in
 /// at_multi_region_equivalence.cpp).

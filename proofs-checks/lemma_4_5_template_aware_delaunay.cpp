@@ -23,14 +23,12 @@ using namespace gen;
 
 constexpr const char* kLemma = "Lemma_4_5";
 
+/// Failure records of this lemma's generated structures (see generators.h).
 template <int D>
 auto record(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_record<D>(kLemma, s.recipe, s.x); };
+  return structure_failure_record<D>(kLemma, s);
 }
-template <int D>
-auto picture(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_picture<D>(s.x); };
-}
+using gen::picture;
 
 /// Def 4.10 for every facet of every template: T_{i,g}(E) is locally Delaunay in AT(Γ).
 template <int D>

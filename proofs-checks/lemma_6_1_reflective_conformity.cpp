@@ -16,14 +16,12 @@ using namespace gen;
 
 constexpr const char* kLemma = "Lemma_6_1";
 
+/// Failure records of this lemma's generated structures (see generators.h).
 template <int D>
 auto record(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_record<D>(kLemma, s.recipe, s.x); };
+  return structure_failure_record<D>(kLemma, s);
 }
-template <int D>
-auto picture(const GeneratedStructure<D>& s) {
-  return [&s] { return structure_picture<D>(s.x); };
-}
+using gen::picture;
 
 /// R = T_1^{-1} ∘ T_2 is a reflection (R ≠ I, R∘R = I, det = -1) and the template lies on one
 /// side of its fixed hyperplane: p - R(p) = 2((n·p - d)/(n·n)) n, so the signs of the

@@ -49,8 +49,12 @@ void record_failure(const std::string& json, const std::string& svg) {
 }
 
 Outcome run(const Property& p, const RunOptions& o) {
+  // RapidCheck reads RC_PARAMS once and, without it, announces a random seed that this runner
+  // then overrides; give it ours first so that its announcement is the seed actually used.
+  static const bool user_params = std::getenv("RC_PARAMS") != nullptr;
+  if (!user_params) setenv("RC_PARAMS", ("seed=" + std::to_string(o.seed)).c_str(), 0);
   rc::detail::TestParams params = rc::detail::configuration().testParams;
-  const char* env = std::getenv("RC_PARAMS");
+  const char* env = user_params ? std::getenv("RC_PARAMS") : nullptr;
   const bool env_seed = env && std::string(env).find("seed") != std::string::npos;
   const bool env_cases = env && std::string(env).find("max_success") != std::string::npos;
   if (!env_seed) params.seed = o.seed;
