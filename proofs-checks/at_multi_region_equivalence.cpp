@@ -35,22 +35,30 @@ void equivalence(const GeneratedStructure<D>& s) {
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
-  p.push_back({kLemma, "multi_region_mesh_iff_conforming" + d, D, Kind::holds,
-               "Definition 4.4 remark: for templated structures with mesh templates (conforming "
-               "and Figure 4.4-like), AT(X) is a valid multi-region mesh iff AT(X) is conforming",
-               [] { return rc::detail::toProperty([] { equivalence<D>(*templated_structure<D>()); }); },
-               [] { return rc::detail::toProperty([] { equivalence<D>(*non_mesh_template_structure<D>()); }); }});
-  p.push_back({kLemma, "templates_not_meshes" + d, D, Kind::counterexample,
-               "Without 'templates are meshes' (templates reduced to their cells, not face-complete): "
-               "AT is conforming but not a multi-region mesh",
-               [] {
-                 return rc::detail::toProperty([] {
-                   const auto s = *non_mesh_template_structure<D>();
-                   const auto si = core::apply_template(s.x);
-                   SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(si) && !si.at.is_valid(), record<D>(s), picture<D>(s));
-                 });
-               },
-               {}});
+  p.push_back(
+      {kLemma, "multi_region_mesh_iff_conforming" + d, D, Kind::holds,
+       "Definition 4.4 remark: for templated structures with mesh templates (conforming "
+       "and Figure 4.4-like), AT(X) is a valid multi-region mesh iff AT(X) is conforming",
+       [] { return rc::detail::toProperty([] { equivalence<D>(*templated_structure<D>()); }); },
+       [] {
+         return rc::detail::toProperty([] { equivalence<D>(*non_mesh_template_structure<D>()); });
+       }});
+  p.push_back(
+      {kLemma,
+       "templates_not_meshes" + d,
+       D,
+       Kind::counterexample,
+       "Without 'templates are meshes' (templates reduced to their cells, not face-complete): "
+       "AT is conforming but not a multi-region mesh",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto s = *non_mesh_template_structure<D>();
+           const auto si = core::apply_template(s.x);
+           SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(si) && !si.at.is_valid(),
+                                record<D>(s), picture<D>(s));
+         });
+       },
+       {}});
 }
 
 } // namespace

@@ -37,7 +37,8 @@ using core::VertexId;
 namespace {
 
 using K = CGAL::Epeck;
-static_assert(std::is_same_v<K::FT, Exact>, "the generators build points of the core's number type");
+static_assert(std::is_same_v<K::FT, Exact>,
+              "the generators build points of the core's number type");
 
 using Cell = std::vector<VertexId>;
 template <int D>
@@ -48,9 +49,15 @@ using Coords = std::array<Exact, D>;
 /// A uniform pick in [lo, hi]. rc::gen::inRange narrows its range with RapidCheck's size (at
 /// size 0 it always yields lo), so it is evaluated at full size here: the generators scale
 /// their structures with the size themselves. Shrinking still moves picks towards lo.
-int pick(int lo, int hi) { return *rc::gen::resize(100, rc::gen::inRange(lo, hi + 1)); }
-bool chance(int percent) { return pick(0, 99) < percent; }
-Exact rational(int num, int den) { return Exact(num) / Exact(den); }
+int pick(int lo, int hi) {
+  return *rc::gen::resize(100, rc::gen::inRange(lo, hi + 1));
+}
+bool chance(int percent) {
+  return pick(0, 99) < percent;
+}
+Exact rational(int num, int den) {
+  return Exact(num) / Exact(den);
+}
 
 /// k/q on [lo, hi], q = 2 one time in four: halves make midpoints and degeneracies common.
 Exact grid_value(int lo, int hi) {
@@ -230,7 +237,7 @@ std::vector<int> random_weights(std::size_t n, const std::vector<bool>& keep) {
 /// the intended hull, which keep weight 0 so that no hull point gets hidden.
 template <int D>
 std::pair<std::vector<Cell>, std::string> some_triangulation(const PointSet<D>& pts,
-                                                              const std::vector<bool>& on_hull) {
+                                                             const std::vector<bool>& on_hull) {
   if (chance(60)) return {delaunay_cells<D>(pts), "delaunay"};
   const auto w = random_weights(pts.size(), on_hull);
   std::ostringstream os;
@@ -286,7 +293,8 @@ PointSet<D> random_point_set(int n) {
 /// D+1 points and a few more; 3D stays smaller because the exact conformity checks cost one LP
 /// per pair of elements.
 int point_count(int size, int dim) {
-  return dim + 1 + (dim == 2 ? pick(0, std::min(6, 1 + size / 15)) : pick(0, std::min(2, size / 35)));
+  return dim + 1 +
+         (dim == 2 ? pick(0, std::min(6, 1 + size / 15)) : pick(0, std::min(2, size / 35)));
 }
 
 // ----- frames: pairwise orthogonal rational axes ------------------------------------------------
@@ -427,13 +435,15 @@ Described<Motion<D>> random_motion() {
 /// AT of the result is g(AT(s)): either T' = g∘T (templates unchanged) or the templates move
 /// too and T' = g∘T∘g^{-1} (metamorphic: every verdict must be unchanged).
 template <int D>
-GeneratedStructure<D> moved(GeneratedStructure<D> s, const Described<Motion<D>>& g, bool conjugate) {
+GeneratedStructure<D> moved(GeneratedStructure<D> s, const Described<Motion<D>>& g,
+                            bool conjugate) {
   const auto gi = g.value.inverse();
   for (std::size_t i = 0; i < s.x.templates.size(); ++i) {
     if (conjugate)
       for (auto& p : s.x.templates[i].mesh.points) p = g.value(p);
     for (auto& inst : s.x.instances[i])
-      inst.transformation = conjugate ? g.value * inst.transformation * gi : g.value * inst.transformation;
+      inst.transformation =
+          conjugate ? g.value * inst.transformation * gi : g.value * inst.transformation;
   }
   s.recipe += std::string(conjugate ? "; conjugated by " : "; moved by ") + g.recipe;
   return s;
@@ -583,7 +593,8 @@ HalfSpacePoints<D> half_space_points(const Frame<D>& f, int size, int orthant_ax
     }
   } else {
     const int mode = pick(0, 9);
-    const int on_plane = mode < 7 ? D + (D == 2 ? pick(0, 2) : pick(0, size / 60)) : (mode < 9 ? 1 : 0);
+    const int on_plane =
+        mode < 7 ? D + (D == 2 ? pick(0, 2) : pick(0, size / 60)) : (mode < 9 ? 1 : 0);
     out.mode = on_plane == 0 ? "none on H" : (on_plane == 1 ? "one on H" : "several on H");
     for (int k = 0; k < on_plane; ++k) {
       Coords<D> c;
@@ -651,8 +662,8 @@ rc::Gen<OrthogonalReflections<D>> reflections_impl(int min_k, int max_k, bool fo
         o.s.x = single_template<D>(mesh, tfs, random_regions(tfs.size()));
         o.s.tier = Tier::valid_templated_mesh;
         o.s.convex = box;
-        o.s.recipe = std::to_string(k) + " orthogonal reflection(s) in " + f.text + ", " +
-                     hp.mode + ", " + how + " of " + points_text<D>(hp.pts);
+        o.s.recipe = std::to_string(k) + " orthogonal reflection(s) in " + f.text + ", " + hp.mode +
+                     ", " + how + " of " + points_text<D>(hp.pts);
         return o;
       }
     });
@@ -803,16 +814,19 @@ rc::Gen<GeneratedStructure<2>> translation_impl<2>(bool conforming, bool delauna
       const auto top = bottom;
       std::string how;
       const int interior = pick(0, std::min(3, size / 30));
-      const auto mesh = box_template_2d(f, e, left, right, bottom, top, interior, delaunay_only, &how);
-      const auto [tfs, grid] = grid_translations<2>(f, e, conforming ? 2 + size / 50 : 3, conforming ? -1 : 0);
+      const auto mesh =
+          box_template_2d(f, e, left, right, bottom, top, interior, delaunay_only, &how);
+      const auto [tfs, grid] =
+          grid_translations<2>(f, e, conforming ? 2 + size / 50 : 3, conforming ? -1 : 0);
       GeneratedStructure<2> s;
       s.x = single_template<2>(mesh, tfs, random_regions(tfs.size()));
       s.tier = conforming ? Tier::valid_templated_mesh : Tier::templated_structure;
       s.convex = true;
-      s.recipe = std::string(conforming ? "translation " : "figure 4.4 translation ") + grid + " of box " +
-                 std::to_string(e[0]) + "x" + std::to_string(e[1]) + " in " + f.text + ", left " +
-                 values_text(left) + " right " + values_text(right) + " bottom/top " +
-                 values_text(bottom) + ", " + how + " with " + std::to_string(interior) + " interior";
+      s.recipe = std::string(conforming ? "translation " : "figure 4.4 translation ") + grid +
+                 " of box " + std::to_string(e[0]) + "x" + std::to_string(e[1]) + " in " + f.text +
+                 ", left " + values_text(left) + " right " + values_text(right) + " bottom/top " +
+                 values_text(bottom) + ", " + how + " with " + std::to_string(interior) +
+                 " interior";
       return s;
     });
   });
@@ -833,9 +847,10 @@ Complex<3> prism_template(const Frame<3>& f, const std::array<int, 3>& e) {
 
 /// Square pyramid (base square in c_2 = 0 split by one diagonal, apex above) in 2 tetrahedra.
 Complex<3> pyramid_template(const Frame<3>& f, int e, int h) {
-  const PointSet<3> pts = {f.at({Exact(0), Exact(0), Exact(0)}), f.at({Exact(e), Exact(0), Exact(0)}),
-                           f.at({Exact(0), Exact(e), Exact(0)}), f.at({Exact(e), Exact(e), Exact(0)}),
-                           f.at({rational(e, 2), rational(e, 2), Exact(h)})};
+  const PointSet<3> pts = {
+      f.at({Exact(0), Exact(0), Exact(0)}), f.at({Exact(e), Exact(0), Exact(0)}),
+      f.at({Exact(0), Exact(e), Exact(0)}), f.at({Exact(e), Exact(e), Exact(0)}),
+      f.at({rational(e, 2), rational(e, 2), Exact(h)})};
   return complex_from_cells<3>(pts, {{0, 1, 3, 4}, {0, 3, 2, 4}});
 }
 
@@ -855,7 +870,8 @@ rc::Gen<GeneratedStructure<3>> translation_impl<3>(bool conforming, bool /*delau
         for (int k = 0; k < n; ++k) tfs.push_back(f.translation(2, Exact(k * e[2])));
         s.x = single_template<3>(prism_template(f, e), tfs, random_regions(tfs.size()));
         s.convex = true;
-        os << "translation stack of " << n << " prisms " << e[0] << "x" << e[1] << "x" << e[2] << " in " << f.text;
+        os << "translation stack of " << n << " prisms " << e[0] << "x" << e[1] << "x" << e[2]
+           << " in " << f.text;
       } else if (!conforming && chance(50)) {
         // Figure 4.4 in 3D by a half turn: the pyramid turned about an axis in its base plane
         // parallel to a side meets itself with the other base diagonal
@@ -874,8 +890,8 @@ rc::Gen<GeneratedStructure<3>> translation_impl<3>(bool conforming, bool /*delau
         s.x = single_template<3>(mesh, tfs, random_regions(tfs.size()));
         s.convex = true;
         os << (conforming ? "translation " : "figure 4.4 translation ") << grid << " of "
-           << (conforming ? "Kuhn" : "5-tetrahedron") << " box " << e[0] << "x" << e[1] << "x" << e[2]
-           << " in " << f.text;
+           << (conforming ? "Kuhn" : "5-tetrahedron") << " box " << e[0] << "x" << e[1] << "x"
+           << e[2] << " in " << f.text;
       }
       s.recipe = os.str();
       return s;
@@ -909,7 +925,8 @@ template <int D>
 Point<D> facet_circumcenter(const PointSet<D>& v) {
   if (v.size() == 2) return core::scaled<Exact, D>(v[0] + v[1], rational(1, 2));
   const auto b = v[1] - v[0], c = v[2] - v[0];
-  const Exact bb = core::dot<Exact, D>(b, b), cc = core::dot<Exact, D>(c, c), bc = core::dot<Exact, D>(b, c);
+  const Exact bb = core::dot<Exact, D>(b, b), cc = core::dot<Exact, D>(c, c),
+              bc = core::dot<Exact, D>(b, c);
   const Exact det = bb * cc - bc * bc;
   const Exact alpha = (bb * cc - cc * bc) / (2 * det), beta = (cc * bb - bb * bc) / (2 * det);
   return v[0] + core::scaled<Exact, D>(b, alpha) + core::scaled<Exact, D>(c, beta);
@@ -934,7 +951,8 @@ std::vector<Point<D>> encroaching_apexes(const Complex<D>& m, const std::vector<
     return k;
   };
   auto less = [](const Key& a, const Key& b) {
-    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), core::PointLess<Exact, D>());
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
+                                        core::PointLess<Exact, D>());
   };
   std::map<Key, int, decltype(less)> images(less);
   for (const auto& [f, n] : count)
@@ -1014,7 +1032,8 @@ PointSet<D> half_space_simplex(const Point<D>& c, const Point<D>& m);
 template <>
 PointSet<2> half_space_simplex<2>(const Point<2>& c, const Point<2>& m) {
   const Point<2> t = make_point<2>({-m[1], m[0]});
-  return {c + core::scaled<Exact, 2>(t, 40), c - core::scaled<Exact, 2>(t, 40), c + core::scaled<Exact, 2>(m, 40)};
+  return {c + core::scaled<Exact, 2>(t, 40), c - core::scaled<Exact, 2>(t, 40),
+          c + core::scaled<Exact, 2>(m, 40)};
 }
 
 template <>
@@ -1026,8 +1045,10 @@ PointSet<3> half_space_simplex<3>(const Point<3>& c, const Point<3>& m) {
   for (int d = 0; d < 3; ++d) e[d] = d == k ? 1 : 0;
   const auto u = cross(m, make_point<3>(e));
   const auto w = cross(m, u);
-  return {c + core::scaled<Exact, 3>(u, 80), c - core::scaled<Exact, 3>(u, 40) + core::scaled<Exact, 3>(w, 70),
-          c - core::scaled<Exact, 3>(u, 40) - core::scaled<Exact, 3>(w, 70), c + core::scaled<Exact, 3>(m, 80)};
+  return {c + core::scaled<Exact, 3>(u, 80),
+          c - core::scaled<Exact, 3>(u, 40) + core::scaled<Exact, 3>(w, 70),
+          c - core::scaled<Exact, 3>(u, 40) - core::scaled<Exact, 3>(w, 70),
+          c + core::scaled<Exact, 3>(m, 80)};
 }
 
 /// A normal m whose hyperplane through c = centroid(e) separates two vertices of e strictly.
@@ -1151,8 +1172,9 @@ rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>> meshes_with_conforming_uni
     const auto m1 = random_submesh<D>(base.value, k1);
     const auto m2 = relabelled<D>(random_submesh<D>(base.value, k2));
     return Described<std::pair<Complex<D>, Complex<D>>>{
-        {m1, m2}, "sub-meshes of dimension " + std::to_string(k1) + " and " + std::to_string(k2) +
-                      " (second relabelled) of " + base.recipe};
+        {m1, m2},
+        "sub-meshes of dimension " + std::to_string(k1) + " and " + std::to_string(k2) +
+            " (second relabelled) of " + base.recipe};
   });
 }
 
@@ -1164,7 +1186,8 @@ Described<std::pair<Complex<D>, Complex<D>>> figure_2_7() {
   const Exact t = rational(pick(1, q - 1), q);
   const auto p = ab[0] + core::scaled<Exact, D>(ab[1] - ab[0], t);
   return {{simplex_complex<D>(ab), simplex_complex<D>({p})},
-          "figure 2.7: line " + text<D>(ab[0]) + "-" + text<D>(ab[1]) + " and vertex at t=" + text(t)};
+          "figure 2.7: line " + text<D>(ab[0]) + "-" + text<D>(ab[1]) +
+              " and vertex at t=" + text(t)};
 }
 
 /// Two triangulations of one point set over the same (uncompacted) point array.
@@ -1195,20 +1218,20 @@ rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>> meshes_with_nonconforming_
 
 template <int D>
 rc::Gen<Described<Complex<D>>> nonconforming_complex() {
-  return rc::gen::suchThat(
-      rc::gen::withSize([](int size) {
-        return rc::gen::exec([size] {
-          const auto pts = random_point_set<D>(point_count(size, D) + 2);
-          std::string how;
-          const auto [a, b] = two_triangulations<D>(pts, &how);
-          auto u = core::set_union(a, b);
-          return Described<Complex<D>>{u, "element union of " + how};
-        });
-      }),
-      [](const Described<Complex<D>>& c) {
-        // the two triangulations differ (equal ones would give a conforming union)
-        return core::find_nonconformity(c.value).has_value();
-      });
+  return rc::gen::suchThat(rc::gen::withSize([](int size) {
+                             return rc::gen::exec([size] {
+                               const auto pts = random_point_set<D>(point_count(size, D) + 2);
+                               std::string how;
+                               const auto [a, b] = two_triangulations<D>(pts, &how);
+                               auto u = core::set_union(a, b);
+                               return Described<Complex<D>>{u, "element union of " + how};
+                             });
+                           }),
+                           [](const Described<Complex<D>>& c) {
+                             // the two triangulations differ (equal ones would give a conforming
+                             // union)
+                             return core::find_nonconformity(c.value).has_value();
+                           });
 }
 
 template <int D>
@@ -1235,10 +1258,12 @@ rc::Gen<Described<MultiRegion<D>>> multi_region_mesh() {
     const auto n = small_vector<D>(-2, 2);
     const Exact d = grid_value(0, 8);
     for (const auto& c : m.value.cells())
-      mr.cell_region[c] = by_side ? (core::dot<Exact, D>(n, centroid<D>(m.value.coords(c))) < d ? 1 : 2)
-                                  : pick(1, 3);
+      mr.cell_region[c] = by_side
+                              ? (core::dot<Exact, D>(n, centroid<D>(m.value.coords(c))) < d ? 1 : 2)
+                              : pick(1, 3);
     return Described<MultiRegion<D>>{
-        mr, m.recipe + (by_side ? "; regions by side of n=" + text<D>(n) + ", d=" + text(d) : "; random regions")};
+        mr, m.recipe + (by_side ? "; regions by side of n=" + text<D>(n) + ", d=" + text(d)
+                                : "; random regions")};
   });
 }
 
@@ -1252,11 +1277,13 @@ rc::Gen<Described<MultiRegion<D>>> nonconforming_multi_region() {
     const auto bad = core::find_nonconformity(m.value);
     for (auto& [c, r] : mr.cell_region)
       if (bad && (bad->a.is_face_of(c) || bad->b.is_face_of(c))) r = 1;
-    return Described<MultiRegion<D>>{mr, m.recipe + "; random regions, the violating pair in region 1"};
+    return Described<MultiRegion<D>>{mr,
+                                     m.recipe + "; random regions, the violating pair in region 1"};
   });
 }
 
-// ----- respect (Lemma 2.3) ------------------------------------------------------------------------
+// ----- respect (Lemma 2.3)
+// ------------------------------------------------------------------------
 
 namespace {
 /// A convex set designed to meet e in a union of faces (or to contain / avoid it), or a random one.
@@ -1308,18 +1335,19 @@ std::pair<PointSet<D>, std::string> convex_set_near(const PointSet<D>& e) {
 
 template <int D>
 rc::Gen<Described<RespectCase<D>>> respect_both() {
-  return rc::gen::suchThat(
-      rc::gen::exec([] {
-        const auto e = random_simplex<D>(pick(1, D));
-        const auto [a, ka] = convex_set_near<D>(e);
-        const auto [b, kb] = convex_set_near<D>(e);
-        return Described<RespectCase<D>>{{e, a, b}, "E=" + points_text<D>(e) + " A(" + ka + ")=" +
-                                                         points_text<D>(a) + " B(" + kb + ")=" +
-                                                         points_text<D>(b)};
-      }),
-      [](const Described<RespectCase<D>>& r) {
-        return core::respects<Exact, D>(r.value.e, {r.value.a}) && core::respects<Exact, D>(r.value.e, {r.value.b});
-      });
+  return rc::gen::suchThat(rc::gen::exec([] {
+                             const auto e = random_simplex<D>(pick(1, D));
+                             const auto [a, ka] = convex_set_near<D>(e);
+                             const auto [b, kb] = convex_set_near<D>(e);
+                             return Described<RespectCase<D>>{
+                                 {e, a, b},
+                                 "E=" + points_text<D>(e) + " A(" + ka + ")=" + points_text<D>(a) +
+                                     " B(" + kb + ")=" + points_text<D>(b)};
+                           }),
+                           [](const Described<RespectCase<D>>& r) {
+                             return core::respects<Exact, D>(r.value.e, {r.value.a}) &&
+                                    core::respects<Exact, D>(r.value.e, {r.value.b});
+                           });
 }
 
 template <int D>
@@ -1331,13 +1359,15 @@ rc::Gen<Described<RespectCase<D>>> respect_one_only() {
     for (const auto& v : e) a.push_back(c + core::scaled<Exact, D>(v - c, Exact(2)));
     const auto m = cutting_normal<D>(e);
     const auto b = half_space_simplex<D>(c, m);
-    return Described<RespectCase<D>>{{e, a, b}, "E=" + points_text<D>(e) + " A(containing)=" +
-                                                    points_text<D>(a) + " B(cut through centroid, m=" +
-                                                    text<D>(m) + ")=" + points_text<D>(b)};
+    return Described<RespectCase<D>>{
+        {e, a, b},
+        "E=" + points_text<D>(e) + " A(containing)=" + points_text<D>(a) +
+            " B(cut through centroid, m=" + text<D>(m) + ")=" + points_text<D>(b)};
   });
 }
 
-// ----- geometry conformity (Lemma 2.4) -------------------------------------------------------------
+// ----- geometry conformity (Lemma 2.4)
+// -------------------------------------------------------------
 
 template <int D>
 rc::Gen<Described<GeometryCase<D>>> geometry_conforming_case() {
@@ -1382,11 +1412,13 @@ rc::Gen<Described<NonConformingGeometryCase<D>>> geometry_not_conforming_case() 
     g.points = m.value.points;
     g.cut = half_space_simplex<D>(centroid<D>(cv), n);
     return Described<NonConformingGeometryCase<D>>{
-        g, m.recipe + "; G cut by the hyperplane through a cell centroid with normal " + text<D>(n)};
+        g,
+        m.recipe + "; G cut by the hyperplane through a cell centroid with normal " + text<D>(n)};
   });
 }
 
-// ----- Delaunay counterexamples (Lemma 2.5 / 4.5) ---------------------------------------------------
+// ----- Delaunay counterexamples (Lemma 2.5 / 4.5)
+// ---------------------------------------------------
 
 namespace {
 /// A flat simplex on the positive side of x_{D-1} >= 0 with its base facet in x_{D-1} = 0.
@@ -1397,13 +1429,15 @@ PointSet<D> flat_simplex(int L, Exact h);
 
 template <>
 PointSet<2> flat_simplex<2>(int L, Exact h) {
-  return {make_point<2>({Exact(-L), Exact(0)}), make_point<2>({Exact(L), Exact(0)}), make_point<2>({Exact(0), h})};
+  return {make_point<2>({Exact(-L), Exact(0)}), make_point<2>({Exact(L), Exact(0)}),
+          make_point<2>({Exact(0), h})};
 }
 template <>
 PointSet<3> flat_simplex<3>(int L, Exact h) {
   // base on the circle of radius L about the origin, apex above (0, L/3)
-  return {make_point<3>({Exact(-L), Exact(0), Exact(0)}), make_point<3>({Exact(L), Exact(0), Exact(0)}),
-          make_point<3>({Exact(0), Exact(L), Exact(0)}), make_point<3>({Exact(0), rational(L, 3), h})};
+  return {
+      make_point<3>({Exact(-L), Exact(0), Exact(0)}), make_point<3>({Exact(L), Exact(0), Exact(0)}),
+      make_point<3>({Exact(0), Exact(L), Exact(0)}), make_point<3>({Exact(0), rational(L, 3), h})};
 }
 /// The largest h = 1/q (q >= 3) with h^2 below the apex foot's margin (so the apex is strictly
 /// inside the base facet's diametral ball: the facet is encroached).
@@ -1435,7 +1469,8 @@ rc::Gen<GeneratedStructure<D>> flat_simplex_v_shape() {
     g.tier = Tier::valid_templated_mesh;
     g.convex = false;
     g.recipe = "flat simplex L=" + std::to_string(L) + " h=" + text(h) +
-               " reflected across the hyperplane through " + text<D>(v[1]) + " with normal " + text<D>(n);
+               " reflected across the hyperplane through " + text<D>(v[1]) + " with normal " +
+               text<D>(n);
     return maybe_moved<D>(g, 50);
   });
 }
@@ -1449,16 +1484,18 @@ rc::Gen<GeneratedStructure<D>> encroached_reflection() {
     Point<D> n = core::zero_point<Exact, D>();
     n[D - 1] = 1;
     GeneratedStructure<D> g;
-    g.x = single_template<D>(simplex_complex<D>(v), {Motion<D>(), Motion<D>::reflection(n, Exact(0))},
-                             {1, pick(1, 2)});
+    g.x = single_template<D>(simplex_complex<D>(v),
+                             {Motion<D>(), Motion<D>::reflection(n, Exact(0))}, {1, pick(1, 2)});
     g.tier = Tier::valid_templated_mesh;
     g.convex = true;
-    g.recipe = "flat simplex L=" + std::to_string(L) + " h=" + text(h) + " reflected across its base facet";
+    g.recipe = "flat simplex L=" + std::to_string(L) + " h=" + text(h) +
+               " reflected across its base facet";
     return maybe_moved<D>(g, 50);
   });
 }
 
-// ----- structures ------------------------------------------------------------------------------------
+// ----- structures
+// ------------------------------------------------------------------------------------
 
 template <int D>
 rc::Gen<GeneratedStructure<D>> reflective_structure() {
@@ -1500,7 +1537,8 @@ rc::Gen<GeneratedStructure<D>> crossing_reflective_structure() {
       for (const auto& c : cs) pts.push_back(f.at(c));
       pts = dedupe<D>(pts);
       GeneratedStructure<D> g;
-      g.x = single_template<D>(delaunay_of<D>(pts), {Motion<D>(), f.reflection(0, 0)}, {1, pick(1, 2)});
+      g.x = single_template<D>(delaunay_of<D>(pts), {Motion<D>(), f.reflection(0, 0)},
+                               {1, pick(1, 2)});
       g.tier = Tier::any;
       g.recipe = "template crossing H: delaunay of " + points_text<D>(pts) + " in " + f.text;
       return maybe_moved<D>(g, 30);
@@ -1614,9 +1652,9 @@ rc::Gen<OrthogonalReflections<D>> non_orthogonal_reflections() {
       out.s.convex = true;
       out.normals = {axis[0], axis[0] - axis[1]};
       out.offsets = {core::dot<Exact, D>(axis[0], o), core::dot<Exact, D>(axis[0] - axis[1], o)};
-      out.s.recipe = "square group (reflections at 45 degrees) of the wedge template, a0=" +
-                     text<D>(axis[0]) + " origin " + text<D>(o) + ", B=" + std::to_string(B) + ", " +
-                     points_text<D>(pts);
+      out.s.recipe =
+          "square group (reflections at 45 degrees) of the wedge template, a0=" + text<D>(axis[0]) +
+          " origin " + text<D>(o) + ", B=" + std::to_string(B) + ", " + points_text<D>(pts);
       return out;
     });
   });
@@ -1634,38 +1672,40 @@ rc::Gen<GeneratedStructure<D>> figure_4_4_structure() {
 
 template <int D>
 rc::Gen<GeneratedStructure<D>> delaunay_templated_mesh() {
-  return rc::gen::suchThat(
-      rc::gen::withSize([](int size) {
-        return rc::gen::exec([size] {
-          GeneratedStructure<D> s;
-          const bool translate = D == 2 && chance(30);
-          if (translate) {
-            s = *translation_impl<D>(true, true);
-          } else {
-            s = (*reflections_impl<D>(1, D == 3 && size < 50 ? 2 : D, true)).s;
-          }
-          // re-triangulate the template: Delaunay with no encroached boundary facet
-          auto& tm = s.x.templates[0].mesh;
-          const auto bnd = core::mesh_boundary(tm);
-          std::set<VertexId> on_boundary;
-          for (const auto& e : bnd.elements)
-            for (VertexId v : e) on_boundary.insert(v);
-          std::vector<bool> removable;
-          for (std::size_t i = 0; i < tm.points.size(); ++i) removable.push_back(!on_boundary.count(VertexId(i)));
-          std::vector<Motion<D>> tfs;
-          for (const auto& spec : s.x.instances[0]) tfs.push_back(spec.transformation);
-          tm = unencroached_delaunay<D>(tm.points, removable, tfs);
-          s.recipe = "delaunay-repaired " + s.recipe;
-          s.convex = true;
-          if (!tm.elements.empty() && chance(30)) s = split_template<D>(s);
-          return maybe_moved<D>(s, 40);
-        });
-      }),
-      [](const GeneratedStructure<D>& s) {
-        for (const auto& t : s.x.templates)
-          if (t.mesh.elements.empty()) return false;
-        return true;
-      });
+  return rc::gen::suchThat(rc::gen::withSize([](int size) {
+                             return rc::gen::exec([size] {
+                               GeneratedStructure<D> s;
+                               const bool translate = D == 2 && chance(30);
+                               if (translate) {
+                                 s = *translation_impl<D>(true, true);
+                               } else {
+                                 s = (*reflections_impl<D>(1, D == 3 && size < 50 ? 2 : D, true)).s;
+                               }
+                               // re-triangulate the template: Delaunay with no encroached boundary
+                               // facet
+                               auto& tm = s.x.templates[0].mesh;
+                               const auto bnd = core::mesh_boundary(tm);
+                               std::set<VertexId> on_boundary;
+                               for (const auto& e : bnd.elements)
+                                 for (VertexId v : e) on_boundary.insert(v);
+                               std::vector<bool> removable;
+                               for (std::size_t i = 0; i < tm.points.size(); ++i)
+                                 removable.push_back(!on_boundary.count(VertexId(i)));
+                               std::vector<Motion<D>> tfs;
+                               for (const auto& spec : s.x.instances[0])
+                                 tfs.push_back(spec.transformation);
+                               tm = unencroached_delaunay<D>(tm.points, removable, tfs);
+                               s.recipe = "delaunay-repaired " + s.recipe;
+                               s.convex = true;
+                               if (!tm.elements.empty() && chance(30)) s = split_template<D>(s);
+                               return maybe_moved<D>(s, 40);
+                             });
+                           }),
+                           [](const GeneratedStructure<D>& s) {
+                             for (const auto& t : s.x.templates)
+                               if (t.mesh.elements.empty()) return false;
+                             return true;
+                           });
 }
 
 namespace {
@@ -1673,7 +1713,8 @@ namespace {
 template <int D>
 std::size_t at_cells(const Structure<D>& x) {
   std::size_t n = 0;
-  for (std::size_t i = 0; i < x.templates.size(); ++i) n += x.templates[i].mesh.cells().size() * x.instances[i].size();
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    n += x.templates[i].mesh.cells().size() * x.instances[i].size();
   return n;
 }
 /// Keeps the structure instance small (so that 300 cases stay fast): a few redraws, then accept.
@@ -1688,11 +1729,19 @@ rc::Gen<GeneratedStructure<D>> valid_templated_mesh() {
     for (int attempt = 0; attempt < 4; ++attempt) {
       switch (pick(0, 5)) {
       case 0:
-      case 1: s = (*reflections_impl<D>(1, 1, false)).s; break;
-      case 2: s = (*reflections_impl<D>(2, 2, false)).s; break; // 8 instances only in Lemma 6.2
+      case 1:
+        s = (*reflections_impl<D>(1, 1, false)).s;
+        break;
+      case 2:
+        s = (*reflections_impl<D>(2, 2, false)).s;
+        break; // 8 instances only in Lemma 6.2
       case 3:
-      case 4: s = *translation_impl<D>(true, false); break;
-      default: s = *delaunay_templated_mesh<D>(); break;
+      case 4:
+        s = *translation_impl<D>(true, false);
+        break;
+      default:
+        s = *delaunay_templated_mesh<D>();
+        break;
       }
       if (at_cells<D>(s.x) <= kMaxAtCells<D>) break;
     }
@@ -1715,9 +1764,12 @@ template <int D>
 rc::Gen<GeneratedStructure<D>> any_structure() {
   return rc::gen::exec([] {
     switch (pick(0, 4)) {
-    case 0: return *crossing_reflective_structure<D>();
-    case 1: return maybe_moved<D>(*overlapping_translation<D>(), 40);
-    default: return *templated_structure<D>();
+    case 0:
+      return *crossing_reflective_structure<D>();
+    case 1:
+      return maybe_moved<D>(*overlapping_translation<D>(), 40);
+    default:
+      return *templated_structure<D>();
     }
   });
 }
@@ -1747,7 +1799,8 @@ nlohmann::json embedded(const std::string& text) {
 } // namespace
 
 template <int D>
-std::string structure_record(const std::string& lemma, const std::string& recipe, const Structure<D>& x) {
+std::string structure_record(const std::string& lemma, const std::string& recipe,
+                             const Structure<D>& x) {
   // The templated-structure format itself, so that `symmesh check FILE` reads the counterexample.
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(io::to_json(x));
   j["description"] = "counterexample of " + lemma + " (" + recipe + ")";
@@ -1756,8 +1809,10 @@ std::string structure_record(const std::string& lemma, const std::string& recipe
 
 template <int D>
 std::string structure_picture(const Structure<D>& x) {
-  if constexpr (D == 2) return io::structure_svg(x);
-  else return std::string();
+  if constexpr (D == 2)
+    return io::structure_svg(x);
+  else
+    return std::string();
 }
 
 template <int D>
@@ -1772,25 +1827,32 @@ std::string complexes_record(const std::string& lemma, const std::string& recipe
 
 template <int D>
 std::string complex_picture(const Complex<D>& c) {
-  if constexpr (D == 2) return io::complex_svg(c);
-  else return std::string();
+  if constexpr (D == 2)
+    return io::complex_svg(c);
+  else
+    return std::string();
 }
 
-// ----- explicit instantiations --------------------------------------------------------------------
+// ----- explicit instantiations
+// --------------------------------------------------------------------
 
 #define SYMMESH_INSTANTIATE_GENERATORS(D)                                                          \
   template std::string text<D>(const Point<D>&);                                                   \
   template Complex<D> simplex_complex<D>(const PointSet<D>&);                                      \
-  template std::string structure_record<D>(const std::string&, const std::string&, const Structure<D>&); \
+  template std::string structure_record<D>(const std::string&, const std::string&,                 \
+                                           const Structure<D>&);                                   \
   template std::string structure_picture<D>(const Structure<D>&);                                  \
-  template std::string complexes_record<D>(const std::string&, const std::string&,                 \
-                                           const std::vector<std::pair<std::string, Complex<D>>>&); \
+  template std::string complexes_record<D>(                                                        \
+      const std::string&, const std::string&,                                                      \
+      const std::vector<std::pair<std::string, Complex<D>>>&);                                     \
   template std::string complex_picture<D>(const Complex<D>&);                                      \
   template rc::Gen<Described<Complex<D>>> triangulation<D>();                                      \
   template rc::Gen<Described<Complex<D>>> delaunay_triangulation<D>();                             \
   template rc::Gen<Described<Complex<D>>> regular_triangulation<D>();                              \
-  template rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>> meshes_with_conforming_union<D>(); \
-  template rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>> meshes_with_nonconforming_union<D>(); \
+  template rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>>                                   \
+  meshes_with_conforming_union<D>();                                                               \
+  template rc::Gen<Described<std::pair<Complex<D>, Complex<D>>>>                                   \
+  meshes_with_nonconforming_union<D>();                                                            \
   template rc::Gen<Described<Complex<D>>> nonconforming_complex<D>();                              \
   template rc::Gen<Described<Complex<D>>> non_face_complete_complex<D>();                          \
   template rc::Gen<Described<MultiRegion<D>>> multi_region_mesh<D>();                              \

@@ -119,11 +119,11 @@ rc::Gen<Described<RespectCase<D>>> respect_one_only();
 /// Lemma 2.4: a mesh with independent descriptions of the geometry it conforms to.
 template <int D>
 struct GeometryCase {
-  Complex<D> mesh;              ///< M, a triangulation of `points`
-  PointSet<D> points;           ///< G = conv(points) = us(M)
-  Complex<D> other_mesh;        ///< another triangulation of `points`: G = us(other_mesh)
-  MultiRegion<D> multi;         ///< (M', ξ) from a reflected template (two convex regions)
-  std::vector<int> region_ids;  ///< the region ids of `multi`
+  Complex<D> mesh;             ///< M, a triangulation of `points`
+  PointSet<D> points;          ///< G = conv(points) = us(M)
+  Complex<D> other_mesh;       ///< another triangulation of `points`: G = us(other_mesh)
+  MultiRegion<D> multi;        ///< (M', ξ) from a reflected template (two convex regions)
+  std::vector<int> region_ids; ///< the region ids of `multi`
   std::vector<PointSet<D>> region_hulls; ///< region(G, i) = conv(region_hulls[k])
 };
 template <int D>
@@ -231,7 +231,9 @@ template <int D>
 Complex<D> simplex_complex(const PointSet<D>& vertices);
 
 /// "_2d" / "_3d", for property names.
-inline std::string dim_suffix(int dimension) { return dimension == 2 ? "_2d" : "_3d"; }
+inline std::string dim_suffix(int dimension) {
+  return dimension == 2 ? "_2d" : "_3d";
+}
 
 // ---------------------------------------------------------------------------------------------
 // Failure records (SYMMESH_PROOF_ASSERT producers; called only when an assertion fails)
@@ -240,7 +242,8 @@ inline std::string dim_suffix(int dimension) { return dimension == 2 ? "_2d" : "
 /// The templated-structure JSON of x with "description" naming the lemma and the recipe; it can
 /// be read back with `symmesh check`.
 template <int D>
-std::string structure_record(const std::string& lemma, const std::string& recipe, const Structure<D>& x);
+std::string structure_record(const std::string& lemma, const std::string& recipe,
+                             const Structure<D>& x);
 /// The structure instance drawn as SVG (2D), or "" (3D).
 template <int D>
 std::string structure_picture(const Structure<D>& x);

@@ -27,8 +27,10 @@ auto record(const Pair<D>& c) {
 }
 template <int D>
 auto picture(const Pair<D>& c) {
-  return [&c] { return complex_picture<D>(core::set_union(core::unify(c.value.first, c.value.second).first,
-                                                           core::unify(c.value.first, c.value.second).second)); };
+  return [&c] {
+    return complex_picture<D>(core::set_union(core::unify(c.value.first, c.value.second).first,
+                                              core::unify(c.value.first, c.value.second).second));
+  };
 }
 
 /// us(M1) ∩ us(M2) ⊆ us(M1 ∩ M2), decided with witnesses: the relative interiors of the
@@ -60,7 +62,8 @@ void intersection_properties(const Pair<D>& c) {
   const auto [m1, m2] = core::unify(c.value.first, c.value.second);
   const auto meet = core::intersection(m1, m2);
   RC_TAG(meet.elements.empty() ? "empty intersection" : "non-empty intersection");
-  SYMMESH_PROOF_ASSERT(meet.elements.size() <= std::min(m1.elements.size(), m2.elements.size()), record(c), picture(c));
+  SYMMESH_PROOF_ASSERT(meet.elements.size() <= std::min(m1.elements.size(), m2.elements.size()),
+                       record(c), picture(c));
   SYMMESH_PROOF_ASSERT(core::is_face_complete(meet), record(c), picture(c));
   SYMMESH_PROOF_ASSERT(core::is_conforming(meet), record(c), picture(c));
 }
@@ -69,8 +72,10 @@ void intersection_properties(const Pair<D>& c) {
 template <int D>
 void underlying_space(const Pair<D>& c, bool check_hypothesis) {
   const auto [m1, m2] = core::unify(c.value.first, c.value.second);
-  if (check_hypothesis) SYMMESH_PROOF_ASSERT(core::is_conforming(core::set_union(m1, m2)), record(c), picture(c));
-  SYMMESH_PROOF_ASSERT(underlying_space_of_intersection_is_intersection<D>(m1, m2), record(c), picture(c));
+  if (check_hypothesis)
+    SYMMESH_PROOF_ASSERT(core::is_conforming(core::set_union(m1, m2)), record(c), picture(c));
+  SYMMESH_PROOF_ASSERT(underlying_space_of_intersection_is_intersection<D>(m1, m2), record(c),
+                       picture(c));
 }
 
 /// Figure 2.7 family: the union is not conforming and us(M1 ∩ M2) != us(M1) ∩ us(M2).
@@ -78,7 +83,8 @@ template <int D>
 void figure_2_7(const Pair<D>& c) {
   const auto [m1, m2] = core::unify(c.value.first, c.value.second);
   SYMMESH_PROOF_ASSERT(!core::is_conforming(core::set_union(m1, m2)), record(c), picture(c));
-  SYMMESH_PROOF_ASSERT(!underlying_space_of_intersection_is_intersection<D>(m1, m2), record(c), picture(c));
+  SYMMESH_PROOF_ASSERT(!underlying_space_of_intersection_is_intersection<D>(m1, m2), record(c),
+                       picture(c));
 }
 
 /// M1 is not face-complete (a cell lost a facet), M2 is its face completion.
@@ -96,46 +102,68 @@ void add(std::vector<Property>& p) {
                "conforming",
                [] {
                  return rc::detail::toProperty([] {
-                   intersection_properties<D>(*rc::gen::oneOf(meshes_with_conforming_union<D>(),
-                                                              meshes_with_nonconforming_union<D>()));
+                   intersection_properties<D>(*rc::gen::oneOf(
+                       meshes_with_conforming_union<D>(), meshes_with_nonconforming_union<D>()));
                  });
                },
-               [] {
-                 return rc::detail::toProperty(
-                     [] { intersection_properties<D>(with_completion<D>(*non_face_complete_complex<D>())); });
-               }});
-  p.push_back({kLemma, "input_not_face_complete" + d, D, Kind::counterexample,
-               "Lemma 2.1 (ii) without 'M1 is face-complete': M1 a triangulation missing one facet, "
-               "M2 its face completion; M1 ∩ M2 is not face-complete",
                [] {
                  return rc::detail::toProperty([] {
-                   const auto c = with_completion<D>(*non_face_complete_complex<D>());
-                   const auto [m1, m2] = core::unify(c.value.first, c.value.second);
-                   SYMMESH_PROOF_ASSERT(!core::is_face_complete(core::intersection(m1, m2)), record<D>(c), picture<D>(c));
+                   intersection_properties<D>(with_completion<D>(*non_face_complete_complex<D>()));
                  });
-               },
-               {}});
-  p.push_back({kLemma, "input_not_conforming" + d, D, Kind::counterexample,
+               }});
+  p.push_back(
+      {kLemma,
+       "input_not_face_complete" + d,
+       D,
+       Kind::counterexample,
+       "Lemma 2.1 (ii) without 'M1 is face-complete': M1 a triangulation missing one facet, "
+       "M2 its face completion; M1 ∩ M2 is not face-complete",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto c = with_completion<D>(*non_face_complete_complex<D>());
+           const auto [m1, m2] = core::unify(c.value.first, c.value.second);
+           SYMMESH_PROOF_ASSERT(!core::is_face_complete(core::intersection(m1, m2)), record<D>(c),
+                                picture<D>(c));
+         });
+       },
+       {}});
+  p.push_back({kLemma,
+               "input_not_conforming" + d,
+               D,
+               Kind::counterexample,
                "Lemma 2.1 (iii) without 'M1 is conforming': M1 = M2 = the element union of two "
                "different triangulations of one point set; M1 ∩ M2 is not conforming",
                [] {
                  return rc::detail::toProperty([] {
                    const auto m = *nonconforming_complex<D>();
                    const Pair<D> c{{m.value, m.value}, m.recipe + "; M2 = M1"};
-                   SYMMESH_PROOF_ASSERT(!core::is_conforming(core::intersection(m.value, m.value)), record<D>(c), picture<D>(c));
+                   SYMMESH_PROOF_ASSERT(!core::is_conforming(core::intersection(m.value, m.value)),
+                                        record<D>(c), picture<D>(c));
                  });
                },
                {}});
   p.push_back({kLemma, "underlying_space_of_intersection" + d, D, Kind::holds,
                "Lemma 2.1 (iv): if M1 ∪ M2 is conforming (sub-meshes of one triangulation, over "
                "separate point arrays) then us(M1 ∩ M2) = us(M1) ∩ us(M2)",
-               [] { return rc::detail::toProperty([] { underlying_space<D>(*meshes_with_conforming_union<D>(), true); }); },
-               [] { return rc::detail::toProperty([] { underlying_space<D>(*meshes_with_nonconforming_union<D>(), false); }); }});
-  p.push_back({kLemma, "figure_2_7_counterexample" + d, D, Kind::counterexample,
+               [] {
+                 return rc::detail::toProperty(
+                     [] { underlying_space<D>(*meshes_with_conforming_union<D>(), true); });
+               },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { underlying_space<D>(*meshes_with_nonconforming_union<D>(), false); });
+               }});
+  p.push_back({kLemma,
+               "figure_2_7_counterexample" + d,
+               D,
+               Kind::counterexample,
                "Lemma 2.1 (iv) without the conforming union (Figure 2.7: a line and a vertex at a "
                "random interior rational point of it; two different triangulations): M1 ∪ M2 is "
                "not conforming and us(M1 ∩ M2) != us(M1) ∩ us(M2)",
-               [] { return rc::detail::toProperty([] { figure_2_7<D>(*meshes_with_nonconforming_union<D>()); }); },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { figure_2_7<D>(*meshes_with_nonconforming_union<D>()); });
+               },
                {}});
 }
 

@@ -48,15 +48,25 @@ void add(std::vector<Property>& p) {
                "Lemma 2.2: for a multi-region mesh (a triangulation with region ids by hyperplane "
                "side or at random) every region {E | i ∈ ξ(E)} equals the face completion of its "
                "cells and is a mesh",
-               [] { return rc::detail::toProperty([] { regions_are_meshes<D>(*multi_region_mesh<D>()); }); },
-               [] { return rc::detail::toProperty([] { regions_are_meshes<D>(*nonconforming_multi_region<D>()); }); }});
-  p.push_back({kLemma, "mesh_not_conforming" + d, D, Kind::counterexample,
+               [] {
+                 return rc::detail::toProperty(
+                     [] { regions_are_meshes<D>(*multi_region_mesh<D>()); });
+               },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { regions_are_meshes<D>(*nonconforming_multi_region<D>()); });
+               }});
+  p.push_back({kLemma,
+               "mesh_not_conforming" + d,
+               D,
+               Kind::counterexample,
                "Lemma 2.2 without 'M is a mesh' (M the element union of two different "
                "triangulations, conflicting cells in region 1): region 1 is not a mesh",
                [] {
                  return rc::detail::toProperty([] {
                    const auto c = *nonconforming_multi_region<D>();
-                   SYMMESH_PROOF_ASSERT(!core::is_mesh(c.value.region(1)), record<D>(c), picture<D>(c));
+                   SYMMESH_PROOF_ASSERT(!core::is_mesh(c.value.region(1)), record<D>(c),
+                                        picture<D>(c));
                  });
                },
                {}});

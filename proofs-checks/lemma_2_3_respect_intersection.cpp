@@ -33,33 +33,40 @@ bool respects_intersection(const RespectCase<D>& r) {
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
-  p.push_back({kLemma, "respect_of_intersection" + d, D, Kind::holds,
-               "Lemma 2.3: a simplex E respecting convex sets A and B (containing E, disjoint from "
-               "it, meeting it in a face, or random) respects A ∩ B",
-               [] {
-                 return rc::detail::toProperty([] {
-                   const auto c = *respect_both<D>();
-                   SYMMESH_PROOF_ASSERT(respects_intersection<D>(c.value), record<D>(c), picture<D>(c));
-                 });
-               },
-               [] {
-                 return rc::detail::toProperty([] {
-                   const auto c = *respect_one_only<D>();
-                   SYMMESH_PROOF_ASSERT(respects_intersection<D>(c.value), record<D>(c), picture<D>(c));
-                 });
-               }});
-  p.push_back({kLemma, "b_not_respected" + d, D, Kind::counterexample,
-               "Lemma 2.3 without 'E respects B' (B a simplex whose facet hyperplane cuts E through "
-               "its centroid, A containing E): E respects A, not B, and not A ∩ B",
-               [] {
-                 return rc::detail::toProperty([] {
-                   const auto c = *respect_one_only<D>();
-                   SYMMESH_PROOF_ASSERT((core::respects<Exact, D>(c.value.e, {c.value.a})), record<D>(c), picture<D>(c));
-                   SYMMESH_PROOF_ASSERT((!core::respects<Exact, D>(c.value.e, {c.value.b})), record<D>(c), picture<D>(c));
-                   SYMMESH_PROOF_ASSERT(!respects_intersection<D>(c.value), record<D>(c), picture<D>(c));
-                 });
-               },
-               {}});
+  p.push_back(
+      {kLemma, "respect_of_intersection" + d, D, Kind::holds,
+       "Lemma 2.3: a simplex E respecting convex sets A and B (containing E, disjoint from "
+       "it, meeting it in a face, or random) respects A ∩ B",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto c = *respect_both<D>();
+           SYMMESH_PROOF_ASSERT(respects_intersection<D>(c.value), record<D>(c), picture<D>(c));
+         });
+       },
+       [] {
+         return rc::detail::toProperty([] {
+           const auto c = *respect_one_only<D>();
+           SYMMESH_PROOF_ASSERT(respects_intersection<D>(c.value), record<D>(c), picture<D>(c));
+         });
+       }});
+  p.push_back(
+      {kLemma,
+       "b_not_respected" + d,
+       D,
+       Kind::counterexample,
+       "Lemma 2.3 without 'E respects B' (B a simplex whose facet hyperplane cuts E through "
+       "its centroid, A containing E): E respects A, not B, and not A ∩ B",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto c = *respect_one_only<D>();
+           SYMMESH_PROOF_ASSERT((core::respects<Exact, D>(c.value.e, {c.value.a})), record<D>(c),
+                                picture<D>(c));
+           SYMMESH_PROOF_ASSERT((!core::respects<Exact, D>(c.value.e, {c.value.b})), record<D>(c),
+                                picture<D>(c));
+           SYMMESH_PROOF_ASSERT(!respects_intersection<D>(c.value), record<D>(c), picture<D>(c));
+         });
+       },
+       {}});
 }
 
 } // namespace

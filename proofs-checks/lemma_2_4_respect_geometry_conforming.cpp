@@ -43,12 +43,14 @@ void geometry_conforming(const Described<GeometryCase<D>>& c) {
   // several exact LPs per face of every cell)
   if (*rc::gen::inRange(0, 2) == 0) {
     RC_TAG("G = conv(points)");
-    SYMMESH_PROOF_ASSERT(cells_respect<D>(g.mesh, {g.points}), record<D>(c.recipe, g.mesh), picture<D>(g.mesh));
+    SYMMESH_PROOF_ASSERT(cells_respect<D>(g.mesh, {g.points}), record<D>(c.recipe, g.mesh),
+                         picture<D>(g.mesh));
   } else {
     RC_TAG("G = us(M')");
     for (const auto& cell : g.mesh.cells())
-      SYMMESH_PROOF_ASSERT((core::respects_underlying_space<Exact, D>(g.mesh.coords(cell), g.other_mesh)),
-                           record<D>(c.recipe, g.mesh), picture<D>(g.mesh));
+      SYMMESH_PROOF_ASSERT(
+          (core::respects_underlying_space<Exact, D>(g.mesh.coords(cell), g.other_mesh)),
+          record<D>(c.recipe, g.mesh), picture<D>(g.mesh));
   }
   // (ii) region by region
   for (std::size_t k = 0; k < g.region_ids.size(); ++k)
@@ -65,27 +67,37 @@ bool respects_cut_geometry(const NonConformingGeometryCase<D>& g) {
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
-  p.push_back({kLemma, "elements_respect_geometry" + d, D, Kind::holds,
-               "Lemma 2.4: every element of a triangulation M of a point set respects G = conv(points) "
-               "and G = us(M') for another triangulation M' (i), and every element of each region of a "
-               "reflected multi-region mesh respects that region's geometry (ii)",
-               [] { return rc::detail::toProperty([] { geometry_conforming<D>(*geometry_conforming_case<D>()); }); },
-               [] {
-                 return rc::detail::toProperty([] {
-                   const auto c = *geometry_not_conforming_case<D>();
-                   SYMMESH_PROOF_ASSERT(respects_cut_geometry<D>(c.value), record<D>(c.recipe, c.value.mesh), picture<D>(c.value.mesh));
-                 });
-               }});
-  p.push_back({kLemma, "mesh_not_geometry_conforming" + d, D, Kind::counterexample,
-               "Lemma 2.4 without geometry-conformity (G = conv(points) cut by a hyperplane through "
-               "a cell's centroid, so us(M) != G): some element of M does not respect G",
-               [] {
-                 return rc::detail::toProperty([] {
-                   const auto c = *geometry_not_conforming_case<D>();
-                   SYMMESH_PROOF_ASSERT(!respects_cut_geometry<D>(c.value), record<D>(c.recipe, c.value.mesh), picture<D>(c.value.mesh));
-                 });
-               },
-               {}});
+  p.push_back(
+      {kLemma, "elements_respect_geometry" + d, D, Kind::holds,
+       "Lemma 2.4: every element of a triangulation M of a point set respects G = conv(points) "
+       "and G = us(M') for another triangulation M' (i), and every element of each region of a "
+       "reflected multi-region mesh respects that region's geometry (ii)",
+       [] {
+         return rc::detail::toProperty(
+             [] { geometry_conforming<D>(*geometry_conforming_case<D>()); });
+       },
+       [] {
+         return rc::detail::toProperty([] {
+           const auto c = *geometry_not_conforming_case<D>();
+           SYMMESH_PROOF_ASSERT(respects_cut_geometry<D>(c.value),
+                                record<D>(c.recipe, c.value.mesh), picture<D>(c.value.mesh));
+         });
+       }});
+  p.push_back(
+      {kLemma,
+       "mesh_not_geometry_conforming" + d,
+       D,
+       Kind::counterexample,
+       "Lemma 2.4 without geometry-conformity (G = conv(points) cut by a hyperplane through "
+       "a cell's centroid, so us(M) != G): some element of M does not respect G",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto c = *geometry_not_conforming_case<D>();
+           SYMMESH_PROOF_ASSERT(!respects_cut_geometry<D>(c.value),
+                                record<D>(c.recipe, c.value.mesh), picture<D>(c.value.mesh));
+         });
+       },
+       {}});
 }
 
 } // namespace

@@ -36,7 +36,8 @@ void equivalence(const Complex<D>& m, const std::string& recipe) {
   RC_TAG(delaunay ? "Delaunay" : "not Delaunay");
   SYMMESH_PROOF_ASSERT(delaunay == facets && facets == local, record<D>(recipe, m), picture<D>(m));
   // CGAL's exact Delaunay triangulation must be recognised as Delaunay
-  if (recipe.rfind("delaunay", 0) == 0) SYMMESH_PROOF_ASSERT(delaunay, record<D>(recipe, m), picture<D>(m));
+  if (recipe.rfind("delaunay", 0) == 0)
+    SYMMESH_PROOF_ASSERT(delaunay, record<D>(recipe, m), picture<D>(m));
 }
 
 template <int D>
@@ -63,7 +64,10 @@ void add(std::vector<Property>& p) {
                    equivalence<D>(structure_instance_mesh<D>(s), s.recipe);
                  });
                }});
-  p.push_back({kLemma, "non_convex_mesh" + d, D, Kind::counterexample,
+  p.push_back({kLemma,
+               "non_convex_mesh" + d,
+               D,
+               Kind::counterexample,
                "Lemma 2.5 needs us(M) = conv(vertices(M)) (missing in the dissertation): a flat "
                "simplex and its mirror image across a tilted hyperplane through one vertex form a "
                "mesh whose facets are all locally Delaunay but which is not Delaunay",
@@ -71,7 +75,8 @@ void add(std::vector<Property>& p) {
                  return rc::detail::toProperty([] {
                    const auto s = *flat_simplex_v_shape<D>();
                    const auto m = structure_instance_mesh<D>(s);
-                   SYMMESH_PROOF_ASSERT(core::all_facets_locally_delaunay(m) && !core::is_delaunay_mesh(m),
+                   SYMMESH_PROOF_ASSERT(core::all_facets_locally_delaunay(m) &&
+                                            !core::is_delaunay_mesh(m),
                                         record<D>(s.recipe, m), picture<D>(m));
                  });
                },

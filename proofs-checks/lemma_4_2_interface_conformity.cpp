@@ -66,7 +66,8 @@ void checker_agrees(const GeneratedStructure<D>& s) {
     // Spec note: with exact vertex identification (i) alone decides a pair's conformity, so
     // (ii) never fails where (i) holds; the first failing condition is always (i).
     SYMMESH_PROOF_ASSERT(v.condition == 1, record(s), picture(s));
-    SYMMESH_PROOF_ASSERT(a != b && core::geometry_interface_nonempty(si, a, b), record(s), picture(s));
+    SYMMESH_PROOF_ASSERT(a != b && core::geometry_interface_nonempty(si, a, b), record(s),
+                         picture(s));
   }
 }
 
@@ -96,30 +97,45 @@ void figure_4_4(const GeneratedStructure<D>& s) {
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
-  p.push_back({kLemma, "sufficiency" + d, D, Kind::holds,
-               "Lemma 4.2: on valid templated meshes (reflections, orthogonal reflections, "
-               "translation grids with identical opposite sides, multi-template splits, global "
-               "motions) (i) and (ii) hold for all neighbouring instances and AT is conforming "
-               "and a valid multi-region mesh",
-               [] { return rc::detail::toProperty([] { sufficiency<D>(*valid_templated_mesh<D>()); }); },
-               [] { return rc::detail::toProperty([] { conclusion_only<D>(*figure_4_4_structure<D>()); }); }});
-  p.push_back({kLemma, "checker_agrees_with_direct" + d, D, Kind::holds,
-               "Lemma 4.2 and its converse: on templated structures (valid and Figure 4.4-like) "
-               "the interface-conformity checker's verdict equals the direct conformity check of "
-               "AT, and a failure names a neighbouring pair and condition (i) (spec note: (i) "
-               "implies (ii) under exact vertex identification)",
-               [] { return rc::detail::toProperty([] { checker_agrees<D>(*templated_structure<D>()); }); },
-               {}});
-  p.push_back({kLemma, "checker_sound_on_any_input" + d, D, Kind::holds,
-               "Lemma 4.2 checker on any structure (overlapping instances included): it never "
-               "certifies a non-conforming AT, and agrees with the direct check where Eq. 4.2 holds",
-               [] { return rc::detail::toProperty([] { checker_sound<D>(*any_structure<D>()); }); },
-               {}});
-  p.push_back({kLemma, "figure_4_4_counterexample" + d, D, Kind::counterexample,
-               "Lemma 4.2 without (i) (Figure 4.4): a translated template whose interface side is "
-               "subdivided differently; the checker reports condition (i) and AT is not conforming",
-               [] { return rc::detail::toProperty([] { figure_4_4<D>(*figure_4_4_structure<D>()); }); },
-               {}});
+  p.push_back(
+      {kLemma, "sufficiency" + d, D, Kind::holds,
+       "Lemma 4.2: on valid templated meshes (reflections, orthogonal reflections, "
+       "translation grids with identical opposite sides, multi-template splits, global "
+       "motions) (i) and (ii) hold for all neighbouring instances and AT is conforming "
+       "and a valid multi-region mesh",
+       [] { return rc::detail::toProperty([] { sufficiency<D>(*valid_templated_mesh<D>()); }); },
+       [] {
+         return rc::detail::toProperty([] { conclusion_only<D>(*figure_4_4_structure<D>()); });
+       }});
+  p.push_back(
+      {kLemma,
+       "checker_agrees_with_direct" + d,
+       D,
+       Kind::holds,
+       "Lemma 4.2 and its converse: on templated structures (valid and Figure 4.4-like) "
+       "the interface-conformity checker's verdict equals the direct conformity check of "
+       "AT, and a failure names a neighbouring pair and condition (i) (spec note: (i) "
+       "implies (ii) under exact vertex identification)",
+       [] { return rc::detail::toProperty([] { checker_agrees<D>(*templated_structure<D>()); }); },
+       {}});
+  p.push_back(
+      {kLemma,
+       "checker_sound_on_any_input" + d,
+       D,
+       Kind::holds,
+       "Lemma 4.2 checker on any structure (overlapping instances included): it never "
+       "certifies a non-conforming AT, and agrees with the direct check where Eq. 4.2 holds",
+       [] { return rc::detail::toProperty([] { checker_sound<D>(*any_structure<D>()); }); },
+       {}});
+  p.push_back(
+      {kLemma,
+       "figure_4_4_counterexample" + d,
+       D,
+       Kind::counterexample,
+       "Lemma 4.2 without (i) (Figure 4.4): a translated template whose interface side is "
+       "subdivided differently; the checker reports condition (i) and AT is not conforming",
+       [] { return rc::detail::toProperty([] { figure_4_4<D>(*figure_4_4_structure<D>()); }); },
+       {}});
 }
 
 } // namespace

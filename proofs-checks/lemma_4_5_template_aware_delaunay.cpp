@@ -54,34 +54,49 @@ void add(std::vector<Property>& p) {
                "encroached interface facet: reflections, orthogonal reflections, translation "
                "grids, splits, global motions) whose template facets are all template-aware "
                "locally Delaunay, AT is Delaunay",
-               [] { return rc::detail::toProperty([] { template_aware_delaunay<D>(*delaunay_templated_mesh<D>(), true); }); },
-               [] { return rc::detail::toProperty([] { template_aware_delaunay<D>(*encroached_reflection<D>(), false); }); }});
-  p.push_back({kLemma, "facet_not_template_aware_locally_delaunay" + d, D, Kind::counterexample,
-               "Lemma 4.5 without template-aware locally Delaunay facets (a flat simplex mirrored "
-               "across its base facet): the base facet is not TALD and AT is not Delaunay",
                [] {
-                 return rc::detail::toProperty([] {
-                   const auto s = *encroached_reflection<D>();
-                   const auto si = core::apply_template(s.x);
-                   SYMMESH_PROOF_ASSERT(!all_template_facets_tald<D>(s.x, si), record<D>(s), picture<D>(s));
-                   SYMMESH_PROOF_ASSERT(!core::is_delaunay_mesh(si.at.mesh), record<D>(s), picture<D>(s));
-                 });
+                 return rc::detail::toProperty(
+                     [] { template_aware_delaunay<D>(*delaunay_templated_mesh<D>(), true); });
                },
-               {}});
-  p.push_back({kLemma, "non_convex_structure_instance" + d, D, Kind::counterexample,
-               "Lemma 4.5 needs us(AT) convex (missing in the dissertation): a flat simplex and its "
-               "mirror image across a tilted hyperplane through one vertex is a templated mesh whose "
-               "template facets are all TALD, yet AT is not Delaunay",
                [] {
-                 return rc::detail::toProperty([] {
-                   const auto s = *flat_simplex_v_shape<D>();
-                   const auto si = core::apply_template(s.x);
-                   SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(si), record<D>(s), picture<D>(s));
-                   SYMMESH_PROOF_ASSERT(all_template_facets_tald<D>(s.x, si), record<D>(s), picture<D>(s));
-                   SYMMESH_PROOF_ASSERT(!core::is_delaunay_mesh(si.at.mesh), record<D>(s), picture<D>(s));
-                 });
-               },
-               {}});
+                 return rc::detail::toProperty(
+                     [] { template_aware_delaunay<D>(*encroached_reflection<D>(), false); });
+               }});
+  p.push_back(
+      {kLemma,
+       "facet_not_template_aware_locally_delaunay" + d,
+       D,
+       Kind::counterexample,
+       "Lemma 4.5 without template-aware locally Delaunay facets (a flat simplex mirrored "
+       "across its base facet): the base facet is not TALD and AT is not Delaunay",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto s = *encroached_reflection<D>();
+           const auto si = core::apply_template(s.x);
+           SYMMESH_PROOF_ASSERT(!all_template_facets_tald<D>(s.x, si), record<D>(s), picture<D>(s));
+           SYMMESH_PROOF_ASSERT(!core::is_delaunay_mesh(si.at.mesh), record<D>(s), picture<D>(s));
+         });
+       },
+       {}});
+  p.push_back(
+      {kLemma,
+       "non_convex_structure_instance" + d,
+       D,
+       Kind::counterexample,
+       "Lemma 4.5 needs us(AT) convex (missing in the dissertation): a flat simplex and its "
+       "mirror image across a tilted hyperplane through one vertex is a templated mesh whose "
+       "template facets are all TALD, yet AT is not Delaunay",
+       [] {
+         return rc::detail::toProperty([] {
+           const auto s = *flat_simplex_v_shape<D>();
+           const auto si = core::apply_template(s.x);
+           SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(si), record<D>(s),
+                                picture<D>(s));
+           SYMMESH_PROOF_ASSERT(all_template_facets_tald<D>(s.x, si), record<D>(s), picture<D>(s));
+           SYMMESH_PROOF_ASSERT(!core::is_delaunay_mesh(si.at.mesh), record<D>(s), picture<D>(s));
+         });
+       },
+       {}});
 }
 
 } // namespace

@@ -29,7 +29,8 @@ using gen::picture;
 template <int D>
 bool template_on_one_side(const Structure<D>& x) {
   const auto r = x.instances[0][0].transformation.inverse() * x.instances[0][1].transformation;
-  if (r.is_identity() || !(r * r).is_identity() || r.determinant_of_linear_part() != Exact(-1)) return false;
+  if (r.is_identity() || !(r * r).is_identity() || r.determinant_of_linear_part() != Exact(-1))
+    return false;
   const auto& pts = x.templates[0].mesh.points;
   Point<D> ref = core::zero_point<Exact, D>();
   for (const auto& p : pts)
@@ -45,7 +46,8 @@ bool template_on_one_side(const Structure<D>& x) {
 template <int D>
 void reflective_conclusion(const GeneratedStructure<D>& s) {
   SYMMESH_PROOF_ASSERT(!core::find_instance_overlap(s.x).has_value(), record(s), picture(s));
-  SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(core::apply_template(s.x)), record(s), picture(s));
+  SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(core::apply_template(s.x)), record(s),
+                       picture(s));
 }
 
 template <int D>
@@ -58,20 +60,28 @@ void add(std::vector<Property>& p) {
                [] {
                  return rc::detail::toProperty([] {
                    const auto s = *reflective_structure<D>();
-                   RC_TAG(s.recipe.find("several on H") != std::string::npos ? "interface facet" : "touching or apart");
+                   RC_TAG(s.recipe.find("several on H") != std::string::npos ? "interface facet"
+                                                                             : "touching or apart");
                    SYMMESH_PROOF_ASSERT(template_on_one_side<D>(s.x), record<D>(s), picture<D>(s));
                    reflective_conclusion<D>(s);
                  });
                },
-               [] { return rc::detail::toProperty([] { reflective_conclusion<D>(*crossing_reflective_structure<D>()); }); }});
-  p.push_back({kLemma, "template_crossing_hyperplane" + d, D, Kind::counterexample,
+               [] {
+                 return rc::detail::toProperty(
+                     [] { reflective_conclusion<D>(*crossing_reflective_structure<D>()); });
+               }});
+  p.push_back({kLemma,
+               "template_crossing_hyperplane" + d,
+               D,
+               Kind::counterexample,
                "Lemma 6.1 without n·x >= d on the template (a cell with vertices strictly on both "
                "sides): the two instances overlap, so Γ is not a templated structure",
                [] {
                  return rc::detail::toProperty([] {
                    const auto s = *crossing_reflective_structure<D>();
                    SYMMESH_PROOF_ASSERT(!template_on_one_side<D>(s.x), record<D>(s), picture<D>(s));
-                   SYMMESH_PROOF_ASSERT(core::find_instance_overlap(s.x).has_value(), record<D>(s), picture<D>(s));
+                   SYMMESH_PROOF_ASSERT(core::find_instance_overlap(s.x).has_value(), record<D>(s),
+                                        picture<D>(s));
                  });
                },
                {}});

@@ -30,7 +30,8 @@ auto picture(const OrthogonalReflections<D>& o) {
 template <int D>
 struct CellLess {
   bool operator()(const PointSet<D>& a, const PointSet<D>& b) const {
-    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), core::PointLess<Exact, D>());
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
+                                        core::PointLess<Exact, D>());
   }
 };
 template <int D>
@@ -119,14 +120,23 @@ void orthogonal(const OrthogonalReflections<D>& o, bool check_hypotheses) {
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
-  p.push_back({kLemma, "orthogonal_reflections" + d, D, Kind::holds,
-               "Lemma 6.2 with Algorithm 6.4: a template in the positive orthant of k = 2..D pairwise "
-               "orthogonal rational hyperplanes, instanced by the 2^k reflection compositions, is a "
-               "templated structure; A = us(AT) has the k symmetries and each half A^{+,n_i,d_i} keeps "
-               "every other symmetry refl_{n_j,d_j}",
-               [] { return rc::detail::toProperty([] { orthogonal<D>(*orthogonal_reflections<D>(), true); }); },
-               [] { return rc::detail::toProperty([] { orthogonal<D>(*non_orthogonal_reflections<D>(), false); }); }});
-  p.push_back({kLemma, "non_orthogonal_hyperplanes" + d, D, Kind::counterexample,
+  p.push_back(
+      {kLemma, "orthogonal_reflections" + d, D, Kind::holds,
+       "Lemma 6.2 with Algorithm 6.4: a template in the positive orthant of k = 2..D pairwise "
+       "orthogonal rational hyperplanes, instanced by the 2^k reflection compositions, is a "
+       "templated structure; A = us(AT) has the k symmetries and each half A^{+,n_i,d_i} keeps "
+       "every other symmetry refl_{n_j,d_j}",
+       [] {
+         return rc::detail::toProperty([] { orthogonal<D>(*orthogonal_reflections<D>(), true); });
+       },
+       [] {
+         return rc::detail::toProperty(
+             [] { orthogonal<D>(*non_orthogonal_reflections<D>(), false); });
+       }});
+  p.push_back({kLemma,
+               "non_orthogonal_hyperplanes" + d,
+               D,
+               Kind::counterexample,
                "Lemma 6.2 without orthogonality (two rational symmetries at 45 degrees, the square "
                "group of a wedge template): A has both symmetries but A^{+,n1,d1} does not keep "
                "refl_{n2,d2}",
@@ -136,7 +146,8 @@ void add(std::vector<Property>& p) {
                    const auto at = core::apply_template(o.s.x).at.mesh;
                    SYMMESH_PROOF_ASSERT(!pairwise_orthogonal<D>(o), record<D>(o), picture<D>(o));
                    SYMMESH_PROOF_ASSERT(symmetric<D>(o, at), record<D>(o), picture<D>(o));
-                   SYMMESH_PROOF_ASSERT(!half_keeps_symmetry<D>(o, at), record<D>(o), picture<D>(o));
+                   SYMMESH_PROOF_ASSERT(!half_keeps_symmetry<D>(o, at), record<D>(o),
+                                        picture<D>(o));
                  });
                },
                {}});

@@ -15,8 +15,8 @@ public:
     const auto out = symmesh::proofs::run(*p_, o);
     std::cout << p_->lemma << "." << p_->name << ": " << out.cases << " cases, seed " << out.seed
               << (out.passed ? ", passed" : ", FAILED") << "\n";
-    EXPECT_TRUE(out.passed) << p_->statement << "\n" << out.message << "\ncounterexample: "
-                            << out.counterexample_path;
+    EXPECT_TRUE(out.passed) << p_->statement << "\n"
+                            << out.message << "\ncounterexample: " << out.counterexample_path;
   }
 
 private:

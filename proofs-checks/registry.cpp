@@ -26,10 +26,10 @@ void register_at_multi_region_equivalence(std::vector<Property>&);
 const std::vector<Property>& all_properties() {
   static const std::vector<Property> props = [] {
     std::vector<Property> p;
-    for (RegisterFn f : {register_lemma_2_1, register_lemma_2_2, register_lemma_2_3,
-                         register_lemma_2_4, register_lemma_2_5, register_lemma_4_1,
-                         register_lemma_4_2, register_lemma_4_5, register_lemma_6_1,
-                         register_lemma_6_2, register_at_multi_region_equivalence})
+    for (RegisterFn f :
+         {register_lemma_2_1, register_lemma_2_2, register_lemma_2_3, register_lemma_2_4,
+          register_lemma_2_5, register_lemma_4_1, register_lemma_4_2, register_lemma_4_5,
+          register_lemma_6_1, register_lemma_6_2, register_at_multi_region_equivalence})
       f(p);
     return p;
   }();
@@ -78,8 +78,8 @@ Outcome run(const Property& p, const RunOptions& o) {
   if (o.write_counterexamples && last_failure.set) {
     namespace fs = std::filesystem;
     fs::create_directories(o.counterexample_dir);
-    const std::string stem = o.counterexample_dir + "/" + p.lemma + "_" + p.name +
-                             (o.dropped ? "_dropped" : "");
+    const std::string stem =
+        o.counterexample_dir + "/" + p.lemma + "_" + p.name + (o.dropped ? "_dropped" : "");
     std::ofstream(stem + ".json") << last_failure.json << "\n";
     if (!last_failure.svg.empty()) std::ofstream(stem + ".svg") << last_failure.svg;
     out.counterexample_path = stem + ".json";

@@ -19,11 +19,11 @@ namespace symmesh::proofs {
 enum class Kind { holds, counterexample };
 
 struct Property {
-  std::string lemma;      ///< e.g. "Lemma_4_2" (the --only key)
-  std::string name;       ///< e.g. "conclusion_2d"
-  int dimension = 2;      ///< 2 or 3
+  std::string lemma; ///< e.g. "Lemma_4_2" (the --only key)
+  std::string name;  ///< e.g. "conclusion_2d"
+  int dimension = 2; ///< 2 or 3
   Kind kind = Kind::holds;
-  std::string statement;  ///< what is asserted, in words
+  std::string statement;                              ///< what is asserted, in words
   std::function<rc::detail::Property()> make;         ///< the property
   std::function<rc::detail::Property()> make_dropped; ///< optional: conclusion without a hypothesis
 };
@@ -34,19 +34,19 @@ using RegisterFn = void (*)(std::vector<Property>&);
 const std::vector<Property>& all_properties();
 
 struct RunOptions {
-  int cases = 300;                ///< successful cases required per property
-  std::uint64_t seed = 20261122;  ///< fixed by default: runs are reproducible
-  bool seed_from_env = false;     ///< RC_PARAMS seed=... overrides
+  int cases = 300;               ///< successful cases required per property
+  std::uint64_t seed = 20261122; ///< fixed by default: runs are reproducible
+  bool seed_from_env = false;    ///< RC_PARAMS seed=... overrides
   std::string counterexample_dir = "counterexamples";
   bool write_counterexamples = true;
-  bool dropped = false;           ///< run make_dropped instead of make
+  bool dropped = false; ///< run make_dropped instead of make
 };
 
 struct Outcome {
   bool passed = false;
   int cases = 0;
   std::uint64_t seed = 0;
-  std::string message;       ///< RapidCheck's failure description
+  std::string message;             ///< RapidCheck's failure description
   std::string counterexample_path; ///< JSON file written for a failure
 };
 

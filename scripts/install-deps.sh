@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake ninja-build ccache pkg-config git
+  build-essential cmake ninja-build ccache pkg-config git clang-format
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libboost-graph-dev
   libeigen3-dev libtbb-dev
   libgtest-dev libgmock-dev librapidcheck-dev

@@ -14,9 +14,15 @@ using T2 = RigidTransformation<Exact, 2>;
 using T3 = RigidTransformation<Exact, 3>;
 
 namespace {
-P2 p2(int x, int y) { return P2{{Exact(x), Exact(y)}}; }
-P2 p2q(int xn, int xd, int yn, int yd) { return P2{{Exact(xn) / xd, Exact(yn) / yd}}; }
-P3 p3(int x, int y, int z) { return P3{{Exact(x), Exact(y), Exact(z)}}; }
+P2 p2(int x, int y) {
+  return P2{{Exact(x), Exact(y)}};
+}
+P2 p2q(int xn, int xd, int yn, int yd) {
+  return P2{{Exact(xn) / xd, Exact(yn) / yd}};
+}
+P3 p3(int x, int y, int z) {
+  return P3{{Exact(x), Exact(y), Exact(z)}};
+}
 
 ElementComplex<Exact, 2> complex2(std::vector<P2> pts, std::vector<Simplex> cells) {
   ElementComplex<Exact, 2> m;
@@ -28,8 +34,8 @@ ElementComplex<Exact, 2> complex2(std::vector<P2> pts, std::vector<Simplex> cell
 /// The unit square split along its diagonal, edges (0,0)-(1,0) and (0,1)-(1,1) split at
 /// x = split_bottom and x = split_top.
 ElementComplex<Exact, 2> split_square(Exact split_bottom, Exact split_top) {
-  std::vector<P2> pts{p2(0, 0), P2{{split_bottom, Exact(0)}}, p2(1, 0), p2(1, 1),
-                      P2{{split_top, Exact(1)}}, p2(0, 1)};
+  std::vector<P2> pts{p2(0, 0), P2{{split_bottom, Exact(0)}}, p2(1, 0),
+                      p2(1, 1), P2{{split_top, Exact(1)}},    p2(0, 1)};
   return complex2(pts, {{0, 1, 5}, {1, 4, 5}, {1, 2, 4}, {2, 3, 4}});
 }
 
@@ -140,8 +146,8 @@ TEST(TemplatedStructure, TranslationWithMismatchedSplitsFailsLemma42) {
   EXPECT_EQ(r.lemma42.condition, 1);
   EXPECT_TRUE(r.lemma42_agrees);
   // Matching splits conform.
-  const auto ok = analyse(one_template(split_square(Exact(1) / 3, Exact(1) / 3),
-                                       {T2(), T2::translation(p2(0, 1))}));
+  const auto ok = analyse(
+      one_template(split_square(Exact(1) / 3, Exact(1) / 3), {T2(), T2::translation(p2(0, 1))}));
   EXPECT_TRUE(ok.templated_mesh);
   EXPECT_TRUE(ok.lemma42.holds);
 }
@@ -246,5 +252,9 @@ void separation_filters_agree_with_lp() {
 }
 } // namespace
 
-TEST(Predicates, SeparationFiltersNeverContradictTheExactLP2D) { separation_filters_agree_with_lp<2>(); }
-TEST(Predicates, SeparationFiltersNeverContradictTheExactLP3D) { separation_filters_agree_with_lp<3>(); }
+TEST(Predicates, SeparationFiltersNeverContradictTheExactLP2D) {
+  separation_filters_agree_with_lp<2>();
+}
+TEST(Predicates, SeparationFiltersNeverContradictTheExactLP3D) {
+  separation_filters_agree_with_lp<3>();
+}

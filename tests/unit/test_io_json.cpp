@@ -20,9 +20,13 @@ namespace io = symmesh::io;
 namespace core = symmesh::core;
 using symmesh::Exact;
 
-std::string source_path(const std::string& rel) { return std::string(SYMMESH_SOURCE_DIR) + "/" + rel; }
+std::string source_path(const std::string& rel) {
+  return std::string(SYMMESH_SOURCE_DIR) + "/" + rel;
+}
 
-Exact q(long n, long d = 1) { return Exact(n) / Exact(d); }
+Exact q(long n, long d = 1) {
+  return Exact(n) / Exact(d);
+}
 
 template <int D>
 core::Point<Exact, D> pt(std::initializer_list<Exact> c) {
@@ -36,7 +40,9 @@ core::StructureReport analyse_any(const io::AnyStructure& s) {
   return std::visit([](const auto& x) { return core::analyse(x); }, s);
 }
 
-io::AnyStructure read_fixture(const std::string& rel) { return io::read_templated_structure(source_path(rel)); }
+io::AnyStructure read_fixture(const std::string& rel) {
+  return io::read_templated_structure(source_path(rel));
+}
 
 /// The InputError message of parsing `text` ("" and a test failure if it parses).
 std::string error_of(const std::string& text) {
@@ -54,13 +60,17 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
 
-#define EXPECT_ERROR(text, prefix, fragment)                                                     \
-  do {                                                                                           \
-    const std::string msg_ = error_of(text);                                                     \
-    EXPECT_TRUE(starts_with(msg_, prefix)) << "message: " << msg_ << "\nexpected prefix: " << (prefix); \
-    EXPECT_NE(msg_.find(fragment), std::string::npos) << "message: " << msg_ << "\nexpected: " << (fragment); \
+#define EXPECT_ERROR(text, prefix, fragment)                                                       \
+  do {                                                                                             \
+    const std::string msg_ = error_of(text);                                                       \
+    EXPECT_TRUE(starts_with(msg_, prefix))                                                         \
+        << "message: " << msg_ << "\nexpected prefix: " << (prefix);                               \
+    EXPECT_NE(msg_.find(fragment), std::string::npos)                                              \
+        << "message: " << msg_ << "\nexpected: " << (fragment);                                    \
   } while (0)
 
 /// A one-template document; `body` is the inside of the template object.
@@ -76,9 +86,11 @@ const std::string kIdentity = R"("instances": [{"transformation": {"identity": {
 /// The unit square template with one instance given by the transformation `tf`.
 std::string with_tf(const std::string& tf, int dim = 2) {
   if (dim == 3)
-    return doc(R"("vertices": [["0","0","0"],["1","0","0"],["0","1","0"],["0","0","1"]], "cells": [[0,1,2,3]],
-                  "instances": [{"transformation": )" + tf + "}]",
-               3);
+    return doc(
+        R"("vertices": [["0","0","0"],["1","0","0"],["0","1","0"],["0","0","1"]], "cells": [[0,1,2,3]],
+                  "instances": [{"transformation": )" +
+            tf + "}]",
+        3);
   return doc(kSquare + R"(, "instances": [{"transformation": )" + tf + "}]");
 }
 
@@ -89,7 +101,8 @@ core::RigidTransformation<Exact, D> tf_of(const std::string& tf) {
 }
 
 template <int D>
-void expect_same(const core::TemplatedStructure<Exact, D>& a, const core::TemplatedStructure<Exact, D>& b) {
+void expect_same(const core::TemplatedStructure<Exact, D>& a,
+                 const core::TemplatedStructure<Exact, D>& b) {
   ASSERT_EQ(a.templates.size(), b.templates.size());
   ASSERT_EQ(a.instances.size(), b.instances.size());
   for (std::size_t i = 0; i < a.templates.size(); ++i) {
@@ -99,7 +112,8 @@ void expect_same(const core::TemplatedStructure<Exact, D>& a, const core::Templa
     EXPECT_TRUE(a.templates[i].mesh.elements == b.templates[i].mesh.elements) << "template " << i;
     ASSERT_EQ(a.instances[i].size(), b.instances[i].size());
     for (std::size_t g = 0; g < a.instances[i].size(); ++g) {
-      EXPECT_TRUE(a.instances[i][g].transformation == b.instances[i][g].transformation) << i << "," << g;
+      EXPECT_TRUE(a.instances[i][g].transformation == b.instances[i][g].transformation)
+          << i << "," << g;
       EXPECT_EQ(a.instances[i][g].region, b.instances[i][g].region);
     }
   }
@@ -142,9 +156,10 @@ TEST(IoJsonExact, ParsesIntegersFractionsAndDecimalsExactly) {
 }
 
 TEST(IoJsonExact, RejectsNonNumbers) {
-  for (const std::string bad : {"nan", "NaN", "-nan", "inf", "-inf", "Infinity", "1/0", "-3/000", "", "abc", "1/",
-                                "/2", "1.2.3", "1e", "e5", ".", "-", "--1", "0x10", " 1", "1 ", "1/-2", "1/2/3",
-                                "1.5/2", "1e100000", "1,5", "½"}) {
+  for (const std::string bad :
+       {"nan",  "NaN", "-nan", "inf",   "-inf",  "Infinity", "1/0",      "-3/000", "",
+        "abc",  "1/",  "/2",   "1.2.3", "1e",    "e5",       ".",        "-",      "--1",
+        "0x10", " 1",  "1 ",   "1/-2",  "1/2/3", "1.5/2",    "1e100000", "1,5",    "½"}) {
     try {
       io::parse_exact(bad, "templates[0].vertices[2][1]");
       ADD_FAILURE() << "accepted " << bad;
@@ -194,26 +209,31 @@ TEST(IoJsonTransformations, Semantics2D) {
   EXPECT_TRUE(tf_of<2>(R"({"identity": {}})").is_identity());
   EXPECT_TRUE(img(R"({"translation": ["1/2", -3]})", pt<2>({1, 1})) == pt<2>({q(3, 2), -2}));
   // refl_{n,d}(x) = x - 2((x·n - d)/(n·n)) n, n not unit
-  EXPECT_TRUE(img(R"({"reflection": {"normal": ["1", "1"], "offset": "0"}})", pt<2>({1, 0})) == pt<2>({0, -1}));
-  EXPECT_TRUE(img(R"({"reflection": {"normal": ["2", "2"], "offset": "2"}})", pt<2>({0, 0})) == pt<2>({1, 1}));
+  EXPECT_TRUE(img(R"({"reflection": {"normal": ["1", "1"], "offset": "0"}})", pt<2>({1, 0})) ==
+              pt<2>({0, -1}));
+  EXPECT_TRUE(img(R"({"reflection": {"normal": ["2", "2"], "offset": "2"}})", pt<2>({0, 0})) ==
+              pt<2>({1, 1}));
   EXPECT_TRUE(img(R"({"reflection": {"normal": [1, 0]}})", pt<2>({3, 5})) == pt<2>({-3, 5}));
-  EXPECT_TRUE(img(R"({"rotation": {"cos": "3/5", "sin": "4/5", "center": [1, 1]}})", pt<2>({2, 1})) ==
-              pt<2>({q(8, 5), q(9, 5)}));
+  EXPECT_TRUE(img(R"({"rotation": {"cos": "3/5", "sin": "4/5", "center": [1, 1]}})",
+                  pt<2>({2, 1})) == pt<2>({q(8, 5), q(9, 5)}));
   EXPECT_TRUE(img(R"({"rotation": {"order": 4, "k": 1}})", pt<2>({1, 0})) == pt<2>({0, 1}));
   EXPECT_TRUE(img(R"({"rotation": {"order": 8, "k": 2}})", pt<2>({1, 0})) == pt<2>({0, 1}));
   EXPECT_TRUE(img(R"({"rotation": {"order": 8, "k": 4}})", pt<2>({1, 0})) == pt<2>({-1, 0}));
   EXPECT_TRUE(img(R"({"rotation": {"order": 4, "k": -1}})", pt<2>({1, 0})) == pt<2>({0, -1}));
-  EXPECT_TRUE(img(R"({"rotation": {"order": 2, "k": 1, "center": [1, 0]}})", pt<2>({0, 0})) == pt<2>({2, 0}));
+  EXPECT_TRUE(img(R"({"rotation": {"order": 2, "k": 1, "center": [1, 0]}})", pt<2>({0, 0})) ==
+              pt<2>({2, 0}));
   EXPECT_TRUE(tf_of<2>(R"({"rotation": {"order": 3, "k": 0}})").is_identity());
   // row i of A has sign[i] in column perm[i]: (x, y) -> (-y + 3, x + 1)
-  EXPECT_TRUE(img(R"({"signed_permutation": {"perm": [1, 0], "sign": [-1, 1], "translation": [3, 1]}})",
-                  pt<2>({1, 0})) == pt<2>({3, 2}));
+  EXPECT_TRUE(
+      img(R"({"signed_permutation": {"perm": [1, 0], "sign": [-1, 1], "translation": [3, 1]}})",
+          pt<2>({1, 0})) == pt<2>({3, 2}));
   // compose [T1, T2] = T1 ∘ T2: the last is applied first
-  EXPECT_TRUE(img(R"({"compose": [{"translation": [1, 0]}, {"rotation": {"order": 4, "k": 1}}]})", pt<2>({1, 0})) ==
-              pt<2>({1, 1}));
-  EXPECT_TRUE(img(R"({"compose": [{"rotation": {"order": 4, "k": 1}}, {"translation": [1, 0]}]})", pt<2>({1, 0})) ==
-              pt<2>({0, 2}));
-  const auto m = tf_of<2>(R"({"matrix": [["3/5", "-4/5"], ["4/5", "3/5"]], "translation": ["1", "2"]})");
+  EXPECT_TRUE(img(R"({"compose": [{"translation": [1, 0]}, {"rotation": {"order": 4, "k": 1}}]})",
+                  pt<2>({1, 0})) == pt<2>({1, 1}));
+  EXPECT_TRUE(img(R"({"compose": [{"rotation": {"order": 4, "k": 1}}, {"translation": [1, 0]}]})",
+                  pt<2>({1, 0})) == pt<2>({0, 2}));
+  const auto m =
+      tf_of<2>(R"({"matrix": [["3/5", "-4/5"], ["4/5", "3/5"]], "translation": ["1", "2"]})");
   EXPECT_TRUE(m.matrix()[0][1] == q(-4, 5));
   EXPECT_TRUE(m.translation_part() == pt<2>({1, 2}));
   EXPECT_TRUE(tf_of<2>(R"({"matrix": [[1, 0], [0, 1]]})").is_identity());
@@ -234,8 +254,9 @@ TEST(IoJsonTransformations, Semantics3D) {
 // Bad input: every class throws an InputError naming the field
 
 TEST(IoJsonErrors, MalformedJson) {
-  EXPECT_ERROR("{\n  \"symmesh\": \"templated-structure/1\",\n  \"dimension\": 2\n  \"templates\": []\n}",
-               "input: malformed JSON at line 4 column ", "");
+  EXPECT_ERROR(
+      "{\n  \"symmesh\": \"templated-structure/1\",\n  \"dimension\": 2\n  \"templates\": []\n}",
+      "input: malformed JSON at line 4 column ", "");
   EXPECT_ERROR("", "input: malformed JSON", "");
   try {
     io::parse_templated_structure("[", "my.json");
@@ -248,52 +269,61 @@ TEST(IoJsonErrors, MalformedJson) {
 TEST(IoJsonErrors, TopLevel) {
   EXPECT_ERROR("[1, 2]", "input: expected a JSON object", "");
   EXPECT_ERROR(R"({"dimension": 2, "templates": []})", "input: missing field \"symmesh\"", "");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/2", "dimension": 2, "templates": []})", "symmesh: ",
-               "unsupported format");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 4, "templates": []})", "dimension: ",
-               "out of range");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": "2", "templates": []})", "dimension: ",
-               "expected the integer 2 or 3");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": []})", "templates: ",
-               "no templates");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2})", "input: missing field \"templates\"",
-               "");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [], "colour": 1})",
-               "input: unknown field \"colour\"", "");
-  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2, "dimension": 3, "templates": []})",
-               "input: duplicate field \"dimension\"", "");
+  EXPECT_ERROR(R"({"symmesh": "templated-structure/2", "dimension": 2, "templates": []})",
+               "symmesh: ", "unsupported format");
+  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 4, "templates": []})",
+               "dimension: ", "out of range");
+  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": "2", "templates": []})",
+               "dimension: ", "expected the integer 2 or 3");
+  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": []})",
+               "templates: ", "no templates");
+  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2})",
+               "input: missing field \"templates\"", "");
+  EXPECT_ERROR(
+      R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [], "colour": 1})",
+      "input: unknown field \"colour\"", "");
+  EXPECT_ERROR(
+      R"({"symmesh": "templated-structure/1", "dimension": 2, "dimension": 3, "templates": []})",
+      "input: duplicate field \"dimension\"", "");
 }
 
 TEST(IoJsonErrors, TemplateShape) {
-  EXPECT_ERROR(doc(kSquare + R"(, "colour": "red", )" + kIdentity), "templates[0]: unknown field \"colour\"", "");
+  EXPECT_ERROR(doc(kSquare + R"(, "colour": "red", )" + kIdentity),
+               "templates[0]: unknown field \"colour\"", "");
   EXPECT_ERROR(doc(R"("vertices": [["0","0"],["1","0"],["1","1"],["0","1"]], )" + kIdentity),
                "templates[0]: missing field \"cells\"", "");
-  EXPECT_ERROR(doc(R"("cells": [[0,1,2]], )" + kIdentity), "templates[0]: missing field \"vertices\"", "");
-  EXPECT_ERROR(doc(R"("name": "S", )" + kIdentity), "templates[0]: missing fields \"vertices\" and \"cells\"",
-               "");
+  EXPECT_ERROR(doc(R"("cells": [[0,1,2]], )" + kIdentity),
+               "templates[0]: missing field \"vertices\"", "");
+  EXPECT_ERROR(doc(R"("name": "S", )" + kIdentity),
+               "templates[0]: missing fields \"vertices\" and \"cells\"", "");
   EXPECT_ERROR(doc(R"("kind": "geometry", )" + kIdentity), "templates[0]: ", "\"polygon\"");
   EXPECT_ERROR(doc(kSquare), "templates[0]: missing field \"instances\"", "");
   EXPECT_ERROR(doc(kSquare + R"(, "instances": [])"), "templates[0].instances: no instances", "");
-  EXPECT_ERROR(doc(kSquare + R"(, "kind": "blob", )" + kIdentity), "templates[0].kind: ", "unknown kind");
-  EXPECT_ERROR(doc(kSquare + R"(, "name": 3, )" + kIdentity), "templates[0]: duplicate field \"name\"", "");
-  EXPECT_ERROR(doc(R"("name": 3, "vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]], )" + kIdentity),
-               "templates[0].name: ", "expected a string");
-  EXPECT_ERROR(doc(R"("vertices": [], "cells": [[0,1,2]], )" + kIdentity), "templates[0].vertices: ",
-               "no vertices");
-  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [], )" + kIdentity), "templates[0].cells: ",
-               "no cells");
+  EXPECT_ERROR(doc(kSquare + R"(, "kind": "blob", )" + kIdentity),
+               "templates[0].kind: ", "unknown kind");
+  EXPECT_ERROR(doc(kSquare + R"(, "name": 3, )" + kIdentity),
+               "templates[0]: duplicate field \"name\"", "");
+  EXPECT_ERROR(
+      doc(R"("name": 3, "vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]], )" + kIdentity),
+      "templates[0].name: ", "expected a string");
+  EXPECT_ERROR(doc(R"("vertices": [], "cells": [[0,1,2]], )" + kIdentity),
+               "templates[0].vertices: ", "no vertices");
+  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [], )" + kIdentity),
+               "templates[0].cells: ", "no cells");
   // wrong coordinate count (mixed dimensions)
   EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0,0],[0,1]], "cells": [[0,1,2]], )" + kIdentity),
                "templates[0].vertices[1]: ", "expected 2 coordinates");
-  EXPECT_ERROR(doc(R"("vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0]], "cells": [[0,1,2,3]], )" + kIdentity, 3),
-               "templates[0].vertices[3]: ", "expected 3 coordinates");
-  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1]], )" + kIdentity), "templates[0].cells[0]: ",
-               "got 2");
+  EXPECT_ERROR(
+      doc(R"("vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0]], "cells": [[0,1,2,3]], )" + kIdentity, 3),
+      "templates[0].vertices[3]: ", "expected 3 coordinates");
+  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1]], )" + kIdentity),
+               "templates[0].cells[0]: ", "got 2");
   EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2,0]], )" + kIdentity),
                "templates[0].cells[0]: ", "got 4");
   // vertex indices
-  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[1,1],[0,1]], "cells": [[0,1,2],[0,2,7]], )" + kIdentity),
-               "templates[0].cells[1]: vertex index 7 out of range (4 vertices)", "");
+  EXPECT_ERROR(
+      doc(R"("vertices": [[0,0],[1,0],[1,1],[0,1]], "cells": [[0,1,2],[0,2,7]], )" + kIdentity),
+      "templates[0].cells[1]: vertex index 7 out of range (4 vertices)", "");
   EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,-1,2]], )" + kIdentity),
                "templates[0].cells[0]: vertex index -1 out of range", "");
   EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,"1",2]], )" + kIdentity),
@@ -305,26 +335,35 @@ TEST(IoJsonErrors, TemplateShape) {
   EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2],[2,1,0]], )" + kIdentity),
                "templates[0].cells[1]: the same cell as cells[0]", "");
   // degenerate cells, duplicate and unused vertices
-  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1],[2,0]], "cells": [[0,1,2],[0,1,3]], )" + kIdentity),
-               "templates[0].cells[1]: degenerate cell", "zero area");
-  EXPECT_ERROR(doc(R"("vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]], "cells": [[0,1,2,3]], )" + kIdentity, 3),
-               "templates[0].cells[0]: degenerate cell", "zero volume");
-  EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1],["2/2","0"]], "cells": [[0,1,2]], )" + kIdentity),
-               "templates[0].vertices[3]: duplicate vertex (same coordinates as vertices[1])", "");
+  EXPECT_ERROR(
+      doc(R"("vertices": [[0,0],[1,0],[0,1],[2,0]], "cells": [[0,1,2],[0,1,3]], )" + kIdentity),
+      "templates[0].cells[1]: degenerate cell", "zero area");
+  EXPECT_ERROR(
+      doc(R"("vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]], "cells": [[0,1,2,3]], )" + kIdentity,
+          3),
+      "templates[0].cells[0]: degenerate cell", "zero volume");
+  EXPECT_ERROR(
+      doc(R"("vertices": [[0,0],[1,0],[0,1],["2/2","0"]], "cells": [[0,1,2]], )" + kIdentity),
+      "templates[0].vertices[3]: duplicate vertex (same coordinates as vertices[1])", "");
   EXPECT_ERROR(doc(R"("vertices": [[0,0],[1,0],[0,1],[5,5]], "cells": [[0,1,2]], )" + kIdentity),
                "templates[0].vertices[3]: vertex is not used by any cell", "");
   // second template, for the path
-  const std::string two = R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [{)" + kSquare +
-                          ", " + kIdentity + R"(}, {"vertices": [[0,0],[1,0],["nan",1]], "cells": [[0,1,2]], )" +
-                          kIdentity + "}]}";
+  const std::string two =
+      R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [{)" + kSquare + ", " +
+      kIdentity + R"(}, {"vertices": [[0,0],[1,0],["nan",1]], "cells": [[0,1,2]], )" + kIdentity +
+      "}]}";
   EXPECT_ERROR(two, "templates[1].vertices[2][0]: \"nan\" is not allowed", "");
 }
 
 TEST(IoJsonErrors, DuplicateKeysAreNamedByTheirPath) {
-  const std::string text = R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [{)" + kSquare + ", " +
-                           kIdentity + R"(}, {)" + kSquare + R"(, "instances": [{"transformation": {"identity": {}}},
+  const std::string text =
+      R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [{)" + kSquare + ", " +
+      kIdentity + R"(}, {)" + kSquare + R"(, "instances": [{"transformation": {"identity": {}}},
       {"region": 2, "transformation": {"compose": [{"identity": {}}, {"reflection": {"normal": [1, 0], "normal": [0, 1]}}]}}]}]})";
-  EXPECT_ERROR(text, "templates[1].instances[1].transformation.compose[1].reflection: duplicate field \"normal\"", "");
+  EXPECT_ERROR(
+      text,
+      "templates[1].instances[1].transformation.compose[1].reflection: duplicate field \"normal\"",
+      "");
 }
 
 TEST(IoJsonErrors, DeeplyNestedComposeIsRejected) {
@@ -334,67 +373,84 @@ TEST(IoJsonErrors, DeeplyNestedComposeIsRejected) {
 }
 
 TEST(IoJsonDefaults, NameKindAndRegion) {
-  const auto s = io::parse_templated_structure(doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]], )" + kIdentity));
+  const auto s = io::parse_templated_structure(
+      doc(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]], )" + kIdentity));
   const auto& x = std::get<io::Structure2>(s);
   EXPECT_EQ(x.templates[0].name, "X1");
   EXPECT_EQ(x.templates[0].kind, core::TemplateKind::mesh);
   EXPECT_EQ(x.instances[0][0].region, 1);
-  EXPECT_EQ(x.templates[0].mesh.elements.size(), 7u); // face completion: 3 vertices, 3 edges, 1 triangle
+  EXPECT_EQ(x.templates[0].mesh.elements.size(),
+            7u); // face completion: 3 vertices, 3 edges, 1 triangle
 }
 
 TEST(IoJsonErrors, Instances) {
   EXPECT_ERROR(doc(kSquare + R"(, "instances": [{"region": 1}])"),
                "templates[0].instances[0]: missing field \"transformation\"", "");
-  EXPECT_ERROR(doc(kSquare + R"(, "instances": [{"transformation": {"identity": {}}, "colour": 2}])"),
-               "templates[0].instances[0]: unknown field \"colour\"", "");
-  EXPECT_ERROR(doc(kSquare + R"(, "instances": [{"transformation": {"identity": {}}, "region": 1.5}])"),
-               "templates[0].instances[0].region: ", "");
-  EXPECT_ERROR(doc(kSquare + R"(, "instances": [{"transformation": {"identity": {}}, "region": "1"}])"),
-               "templates[0].instances[0].region: ", "expected an integer");
-  EXPECT_ERROR(doc(kSquare + R"(, "instances": {"transformation": {"identity": {}}})"), "templates[0].instances: ",
-               "expected an array");
+  EXPECT_ERROR(
+      doc(kSquare + R"(, "instances": [{"transformation": {"identity": {}}, "colour": 2}])"),
+      "templates[0].instances[0]: unknown field \"colour\"", "");
+  EXPECT_ERROR(
+      doc(kSquare + R"(, "instances": [{"transformation": {"identity": {}}, "region": 1.5}])"),
+      "templates[0].instances[0].region: ", "");
+  EXPECT_ERROR(
+      doc(kSquare + R"(, "instances": [{"transformation": {"identity": {}}, "region": "1"}])"),
+      "templates[0].instances[0].region: ", "expected an integer");
+  EXPECT_ERROR(doc(kSquare + R"(, "instances": {"transformation": {"identity": {}}})"),
+               "templates[0].instances: ", "expected an array");
 }
 
 TEST(IoJsonErrors, Transformations) {
   const std::string p = "templates[0].instances[0].transformation";
-  EXPECT_ERROR(with_tf(R"({"shear": {"factor": "1/2"}})"), p + ": unknown transformation \"shear\"", "");
+  EXPECT_ERROR(with_tf(R"({"shear": {"factor": "1/2"}})"), p + ": unknown transformation \"shear\"",
+               "");
   EXPECT_ERROR(with_tf("{}"), p + ": empty transformation", "");
   EXPECT_ERROR(with_tf(R"({"translation": [0, 0], "identity": {}})"), p + ": ", "exactly one key");
-  EXPECT_ERROR(with_tf(R"({"translation": [0, 0], "translation": [1, 0]})"), p + ": duplicate field \"translation\"",
-               "");
+  EXPECT_ERROR(with_tf(R"({"translation": [0, 0], "translation": [1, 0]})"),
+               p + ": duplicate field \"translation\"", "");
   EXPECT_ERROR(with_tf(R"({"identity": []})"), p + ".identity: ", "expected {}");
-  EXPECT_ERROR(with_tf(R"({"translation": [0, 0, 0]})"), p + ".translation: ", "expected 2 coordinates");
+  EXPECT_ERROR(with_tf(R"({"translation": [0, 0, 0]})"),
+               p + ".translation: ", "expected 2 coordinates");
   EXPECT_ERROR(with_tf(R"({"translation": [0, 0.5]})"), p + ".translation[1]: ", "string");
   EXPECT_ERROR(with_tf(R"({"matrix": [["1", "1"], ["0", "1"]], "translation": ["0", "0"]})"),
                p + ".matrix: matrix is not orthogonal: (A^T A)[0][1] != 0", "");
-  EXPECT_ERROR(with_tf(R"({"matrix": [[0, 0], [0, 0]]})"), p + ".matrix: matrix is not orthogonal", "");
-  EXPECT_ERROR(with_tf(R"({"matrix": [[2, 0], [0, "1/2"]]})"), p + ".matrix: matrix is not orthogonal", "");
+  EXPECT_ERROR(with_tf(R"({"matrix": [[0, 0], [0, 0]]})"), p + ".matrix: matrix is not orthogonal",
+               "");
+  EXPECT_ERROR(with_tf(R"({"matrix": [[2, 0], [0, "1/2"]]})"),
+               p + ".matrix: matrix is not orthogonal", "");
   EXPECT_ERROR(with_tf(R"({"matrix": [[1, 0]]})"), p + ".matrix: ", "expected 2 rows");
-  EXPECT_ERROR(with_tf(R"({"matrix": [[1, 0], [0, 1]], "scale": 2})"), p + ": unknown field \"scale\"", "");
-  EXPECT_ERROR(with_tf(R"({"reflection": {"normal": [0, 0], "offset": 1}})"), p + ".reflection.normal: ",
-               "zero vector");
-  EXPECT_ERROR(with_tf(R"({"reflection": {"offset": 1}})"), p + ".reflection: missing field \"normal\"", "");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"cos": "1/2", "sin": "1/2"}})"), p + ".rotation: ", "cos^2 + sin^2 != 1");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"cos": "3/5"}})"), p + ".rotation: missing field \"sin\"", "");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"order": 5, "k": 1}})"),
-               p + ".rotation.order: rotation order 5 needs the cyclotomic kernel, not available yet", "");
+  EXPECT_ERROR(with_tf(R"({"matrix": [[1, 0], [0, 1]], "scale": 2})"),
+               p + ": unknown field \"scale\"", "");
+  EXPECT_ERROR(with_tf(R"({"reflection": {"normal": [0, 0], "offset": 1}})"),
+               p + ".reflection.normal: ", "zero vector");
+  EXPECT_ERROR(with_tf(R"({"reflection": {"offset": 1}})"),
+               p + ".reflection: missing field \"normal\"", "");
+  EXPECT_ERROR(with_tf(R"({"rotation": {"cos": "1/2", "sin": "1/2"}})"),
+               p + ".rotation: ", "cos^2 + sin^2 != 1");
+  EXPECT_ERROR(with_tf(R"({"rotation": {"cos": "3/5"}})"), p + ".rotation: missing field \"sin\"",
+               "");
+  EXPECT_ERROR(
+      with_tf(R"({"rotation": {"order": 5, "k": 1}})"),
+      p + ".rotation.order: rotation order 5 needs the cyclotomic kernel, not available yet", "");
   EXPECT_ERROR(with_tf(R"({"rotation": {"order": 12, "k": 2}})"),
                p + ".rotation.order: rotation order 6 needs the cyclotomic kernel", "");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"order": 0, "k": 1}})"), p + ".rotation.order: ", "out of range");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"quaternion": [1, 0, 0, 0]}})"), p + ".rotation.quaternion: ", "3D only");
+  EXPECT_ERROR(with_tf(R"({"rotation": {"order": 0, "k": 1}})"),
+               p + ".rotation.order: ", "out of range");
+  EXPECT_ERROR(with_tf(R"({"rotation": {"quaternion": [1, 0, 0, 0]}})"),
+               p + ".rotation.quaternion: ", "3D only");
   EXPECT_ERROR(with_tf(R"({"rotation": {"angle": 90}})"), p + ".rotation: ", "\"cos\" and \"sin\"");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"quaternion": [0, 0, 0, 0]}})", 3), p + ".rotation.quaternion: ",
-               "quaternion is zero");
-  EXPECT_ERROR(with_tf(R"({"rotation": {"cos": 1, "sin": 0}})", 3), p + ".rotation: ", "quaternion");
-  EXPECT_ERROR(with_tf(R"({"signed_permutation": {"perm": [0, 0], "sign": [1, 1]}})"), p + ".signed_permutation: ",
-               "not a permutation");
-  EXPECT_ERROR(with_tf(R"({"signed_permutation": {"perm": [0, 1], "sign": [1, 2]}})"), p + ".signed_permutation: ",
-               "must be 1 or -1");
+  EXPECT_ERROR(with_tf(R"({"rotation": {"quaternion": [0, 0, 0, 0]}})", 3),
+               p + ".rotation.quaternion: ", "quaternion is zero");
+  EXPECT_ERROR(with_tf(R"({"rotation": {"cos": 1, "sin": 0}})", 3),
+               p + ".rotation: ", "quaternion");
+  EXPECT_ERROR(with_tf(R"({"signed_permutation": {"perm": [0, 0], "sign": [1, 1]}})"),
+               p + ".signed_permutation: ", "not a permutation");
+  EXPECT_ERROR(with_tf(R"({"signed_permutation": {"perm": [0, 1], "sign": [1, 2]}})"),
+               p + ".signed_permutation: ", "must be 1 or -1");
   EXPECT_ERROR(with_tf(R"({"signed_permutation": {"perm": [0, 1]}})"),
                p + ".signed_permutation: missing field \"sign\"", "");
   EXPECT_ERROR(with_tf(R"({"compose": []})"), p + ".compose: ", "at least one");
-  EXPECT_ERROR(with_tf(R"({"compose": [{"identity": {}}, {"shear": 1}]})"), p + ".compose[1]: ",
-               "unknown transformation \"shear\"");
+  EXPECT_ERROR(with_tf(R"({"compose": [{"identity": {}}, {"shear": 1}]})"),
+               p + ".compose[1]: ", "unknown transformation \"shear\"");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -429,18 +485,23 @@ TEST(IoJsonPolygon, TriangulatesPolygonWithHolesExactly) {
   EXPECT_TRUE(r.well_formed) << r.error;
   EXPECT_TRUE(r.templated_geometry);
   // a straight (180 degree) vertex is kept as a vertex
-  const auto t = io::parse_templated_structure(geometry(R"("polygon": [[0,0],[1,0],[2,0],[2,2],[0,2]])"));
+  const auto t =
+      io::parse_templated_structure(geometry(R"("polygon": [[0,0],[1,0],[2,0],[2,2],[0,2]])"));
   EXPECT_EQ(std::get<io::Structure2>(t).templates[0].mesh.cells().size(), 3u);
   expect_round_trip(s);
 }
 
 TEST(IoJsonPolygon, RejectsBadPolygons) {
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[2,2],[2,0],[0,2]])"), "templates[0].polygon: ", "self-intersecting");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],[2,0]])"), "templates[0].polygon: ", "self-intersecting");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[2,0],[2,1],[1,0],[1,2]])"), "templates[0].polygon: ",
-               "self-intersecting");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0]])"), "templates[0].polygon: ", "at least 3 vertices");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],[1,1],[0,0]])"), "templates[0].polygon[3]: ", "repeated vertex");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[2,2],[2,0],[0,2]])"),
+               "templates[0].polygon: ", "self-intersecting");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],[2,0]])"),
+               "templates[0].polygon: ", "self-intersecting");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[2,0],[2,1],[1,0],[1,2]])"),
+               "templates[0].polygon: ", "self-intersecting");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0]])"),
+               "templates[0].polygon: ", "at least 3 vertices");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],[1,1],[0,0]])"),
+               "templates[0].polygon[3]: ", "repeated vertex");
   EXPECT_ERROR(geometry(R"("polygon": [[0,0],[4,0],[4,4],[0,4]], "holes": [[[5,5],[6,5],[6,6]]])"),
                "templates[0].holes[0]: ", "not inside");
   EXPECT_ERROR(geometry(R"("polygon": [[0,0],[4,0],[4,4],[0,4]], "holes": [[[1,1],[5,1],[5,2]]])"),
@@ -448,27 +509,33 @@ TEST(IoJsonPolygon, RejectsBadPolygons) {
   EXPECT_ERROR(geometry(R"("polygon": [[0,0],[4,0],[4,4],[0,4]], "holes": [[[0,0],[1,1],[1,2]]])"),
                "templates[0].holes[0][0]: ", "repeated vertex");
   EXPECT_ERROR(
-      geometry(R"("polygon": [[0,0],[9,0],[9,9],[0,9]], "holes": [[[1,1],[8,1],[8,8],[1,8]], [[2,2],[3,2],[3,3]]])"),
+      geometry(
+          R"("polygon": [[0,0],[9,0],[9,9],[0,9]], "holes": [[[1,1],[8,1],[8,8],[1,8]], [[2,2],[3,2],[3,3]]])"),
       "templates[0].holes[1]: ", "inside another hole");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[4,0],[4,4],[0,4]], "holes": [[[1,1],[2,1],[2,2]], [[2,1],[3,1],[3,2]]])"),
-               "templates[0].holes[1][0]: ", "repeated vertex");
-  EXPECT_ERROR(doc(R"("polygon": [[0,0],[1,0],[0,1]], )" + kIdentity), "templates[0].polygon: ", "geometry");
+  EXPECT_ERROR(
+      geometry(
+          R"("polygon": [[0,0],[4,0],[4,4],[0,4]], "holes": [[[1,1],[2,1],[2,2]], [[2,1],[3,1],[3,2]]])"),
+      "templates[0].holes[1][0]: ", "repeated vertex");
+  EXPECT_ERROR(doc(R"("polygon": [[0,0],[1,0],[0,1]], )" + kIdentity),
+               "templates[0].polygon: ", "geometry");
   EXPECT_ERROR(doc(R"("kind": "geometry", "polygon": [[0,0,0],[1,0,0],[0,1,0]], )" + kIdentity, 3),
                "templates[0].polygon: ", "2D");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]])"), "templates[0]: ", "not both");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]])"),
+               "templates[0]: ", "not both");
   EXPECT_ERROR(geometry(R"("vertices": [[0,0],[1,0],[0,1]], "cells": [[0,1,2]], "holes": [])"),
                "templates[0].holes: ", "needs \"polygon\"");
-  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],["inf",1]])"), "templates[0].polygon[2][0]: ", "not allowed");
+  EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],["inf",1]])"),
+               "templates[0].polygon[2][0]: ", "not allowed");
 }
 
 // ---------------------------------------------------------------------------------------------
 // Writers and round trips
 
 TEST(IoJsonRoundTrip, FixturesAndGeneratedStructures) {
-  for (const std::string f :
-       {"data/fig_4_3_templated_mesh.json", "data/fig_4_4_nonconforming.json", "data/fig_4_5_reflection.json",
-        "data/fig_4_6_instance_graph.json", "data/reflected_cube_3d.json", "data/square_geometry_2d.json",
-        "tests/data/bad/overlapping_instances.json"}) {
+  for (const std::string f : {"data/fig_4_3_templated_mesh.json", "data/fig_4_4_nonconforming.json",
+                              "data/fig_4_5_reflection.json", "data/fig_4_6_instance_graph.json",
+                              "data/reflected_cube_3d.json", "data/square_geometry_2d.json",
+                              "tests/data/bad/overlapping_instances.json"}) {
     SCOPED_TRACE(f);
     expect_round_trip(read_fixture(f));
   }
@@ -481,8 +548,9 @@ TEST(IoJsonRoundTrip, FixturesAndGeneratedStructures) {
   t.mesh = core::face_completion(t.mesh);
   x.templates.push_back(t);
   using R = core::RigidTransformation<Exact, 2>;
-  x.instances.push_back({{R::rotation_2d(q(3, 5), q(-4, 5), pt<2>({q(1, 7), 2})), -3},
-                         {R::reflection(pt<2>({3, 4}), q(1, 2)) * R::translation(pt<2>({5, q(1, 9)})), 7}});
+  x.instances.push_back(
+      {{R::rotation_2d(q(3, 5), q(-4, 5), pt<2>({q(1, 7), 2})), -3},
+       {R::reflection(pt<2>({3, 4}), q(1, 2)) * R::translation(pt<2>({5, q(1, 9)})), 7}});
   expect_round_trip(io::AnyStructure(x));
   io::Structure3 y;
   core::Template<Exact, 3> u;
@@ -532,8 +600,8 @@ TEST(IoJsonRoundTrip, ComplexToJson) {
 // Fixtures: the verdicts of core::analyse
 
 /// Graph edges counted by unordered template pair; trivial self-loops separately.
-std::map<std::pair<std::size_t, std::size_t>, int> edge_multiplicities(const core::StructureReport& r,
-                                                                       int* trivial) {
+std::map<std::pair<std::size_t, std::size_t>, int>
+edge_multiplicities(const core::StructureReport& r, int* trivial) {
   std::map<std::pair<std::size_t, std::size_t>, int> out;
   *trivial = 0;
   for (const auto& e : r.graph_edges) {
@@ -644,11 +712,12 @@ TEST(IoJsonFixtures, OverlappingInstancesAreNotATemplatedStructure) {
 TEST(IoJsonFixtures, BadFilesThrowInputErrorsNamingTheField) {
   const std::map<std::string, std::string> expected{
       {"malformed.json", "malformed JSON at line 4 column 13: syntax error"},
-      {"nonorthogonal_matrix.json",
-       "templates[0].instances[1].transformation.matrix: matrix is not orthogonal: (A^T A)[0][1] != 0"},
+      {"nonorthogonal_matrix.json", "templates[0].instances[1].transformation.matrix: matrix is "
+                                    "not orthogonal: (A^T A)[0][1] != 0"},
       {"nan.json", "templates[0].vertices[2][0]: \"nan\" is not allowed"},
       {"missing_field.json", "templates[0]: missing field \"cells\""},
-      {"unknown_transformation.json", "templates[0].instances[1].transformation: unknown transformation \"shear\""},
+      {"unknown_transformation.json",
+       "templates[0].instances[1].transformation: unknown transformation \"shear\""},
   };
   for (const auto& [file, prefix] : expected) {
     SCOPED_TRACE(file);
@@ -676,7 +745,8 @@ TEST(IoJsonFixtures, UnreadableFile) {
     io::read_templated_structure(source_path("tests/data/bad"));
     ADD_FAILURE() << "no error";
   } catch (const io::InputError& e) {
-    EXPECT_TRUE(starts_with(e.what(), source_path("tests/data/bad") + ": cannot open file")) << e.what();
+    EXPECT_TRUE(starts_with(e.what(), source_path("tests/data/bad") + ": cannot open file"))
+        << e.what();
   }
 }
 

@@ -67,22 +67,26 @@ int run_lemmas(const LemmaOptions& o) {
     const bool good = o.dropped ? !out.passed : out.passed;
     failed += !good;
     char line[512];
-    std::snprintf(line, sizeof line, "%-28s %-44s %dD %-14s %5d cases  %-8s %7.2f s", p->lemma.c_str(),
-                  p->name.c_str(), p->dimension,
-                  p->kind == proofs::Kind::holds ? "holds" : "counterexample", out.cases,
-                  o.dropped ? (out.passed ? "MISSED" : "caught") : (out.passed ? "passed" : "FAILED"), s);
+    std::snprintf(
+        line, sizeof line, "%-28s %-44s %dD %-14s %5d cases  %-8s %7.2f s", p->lemma.c_str(),
+        p->name.c_str(), p->dimension, p->kind == proofs::Kind::holds ? "holds" : "counterexample",
+        out.cases,
+        o.dropped ? (out.passed ? "MISSED" : "caught") : (out.passed ? "passed" : "FAILED"), s);
     std::cout << line << "\n";
-    if (!out.counterexample_path.empty()) std::cout << "    counterexample: " << out.counterexample_path << "\n";
+    if (!out.counterexample_path.empty())
+      std::cout << "    counterexample: " << out.counterexample_path << "\n";
     if (!out.passed && !o.dropped) std::cout << "    " << out.message << "\n";
     if (!o.quiet) {
-      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double el =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::fprintf(stderr, "[lemmas] %zu/%zu properties, %d failed, %.1f s elapsed\n", k,
                    todo.size(), failed, el);
     }
   }
   std::cout << (todo.size() - failed) << " passed, " << failed << " failed\n";
   std::cout << "seed " << o.seed << ", " << o.cases << " cases per property"
-            << (o.dropped ? " (hypothesis dropped: a failure is the expected outcome)" : "") << "\n";
+            << (o.dropped ? " (hypothesis dropped: a failure is the expected outcome)" : "")
+            << "\n";
   return failed ? negative : ok;
 }
 #endif
@@ -94,7 +98,8 @@ void add_lemmas(CLI::App& app, int& exit_code) {
       "lemmas", "Check the dissertation's lemmas on random 2D and 3D templated structures in exact "
                 "arithmetic (RapidCheck). One line per property; a failing case is shrunk and "
                 "written to the counterexample folder as JSON (+ SVG in 2D).");
-  cmd->add_option("--cases", o->cases, "successful random cases per property")->capture_default_str();
+  cmd->add_option("--cases", o->cases, "successful random cases per property")
+      ->capture_default_str();
   cmd->add_option("--seed", o->seed, "random seed (runs are reproducible)")->capture_default_str();
   cmd->add_option("--only", o->only, "only these lemmas, e.g. Lemma_4_2 (repeatable)");
   cmd->add_option("--dim", o->dim, "only 2D or only 3D properties")->check(CLI::IsMember({2, 3}));

@@ -127,8 +127,8 @@ bool for_each_candidate_plane(const std::vector<Point<FT, D>>& pts, F&& test) {
         }
         for (std::size_t l = j + 1; l < n; ++l) {
           const Point<FT, 3> w = pts[l] - pts[i];
-          const Point<FT, 3> nn{{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                                 u[0] * w[1] - u[1] * w[0]}};
+          const Point<FT, 3> nn{
+              {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}};
           if (test(pts[i], nn)) return true;
         }
       }
@@ -156,16 +156,17 @@ template <class FT, int D>
 bool weakly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
   std::vector<Point<FT, D>> pts = a;
   pts.insert(pts.end(), b.begin(), b.end());
-  return detail::for_each_candidate_plane<FT, D>(pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
-    bool nonzero = false;
-    for (int d = 0; d < D; ++d) nonzero = nonzero || n[d] != 0;
-    if (!nonzero) return false;
-    const auto fa = detail::side_flags<FT, D>(a, p, n);
-    const auto fb = detail::side_flags<FT, D>(b, p, n);
-    const bool a_in_plane = !fa[0] && !fa[2], b_in_plane = !fb[0] && !fb[2];
-    if (a_in_plane && b_in_plane) return false;
-    return (!fa[2] && !fb[0]) || (!fa[0] && !fb[2]);
-  });
+  return detail::for_each_candidate_plane<FT, D>(
+      pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+        bool nonzero = false;
+        for (int d = 0; d < D; ++d) nonzero = nonzero || n[d] != 0;
+        if (!nonzero) return false;
+        const auto fa = detail::side_flags<FT, D>(a, p, n);
+        const auto fb = detail::side_flags<FT, D>(b, p, n);
+        const bool a_in_plane = !fa[0] && !fa[2], b_in_plane = !fb[0] && !fb[2];
+        if (a_in_plane && b_in_plane) return false;
+        return (!fa[2] && !fb[0]) || (!fa[0] && !fb[2]);
+      });
 }
 
 /// A hyperplane puts a and b in opposite half-spaces, one of them open: conv a ∩ conv b = ∅.
@@ -173,12 +174,13 @@ template <class FT, int D>
 bool strictly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
   std::vector<Point<FT, D>> pts = a;
   pts.insert(pts.end(), b.begin(), b.end());
-  return detail::for_each_candidate_plane<FT, D>(pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
-    const auto fa = detail::side_flags<FT, D>(a, p, n);
-    const auto fb = detail::side_flags<FT, D>(b, p, n);
-    const bool a_neg = !fa[2], a_pos = !fa[0], b_neg = !fb[2], b_pos = !fb[0];
-    return (a_neg && b_pos && (!fa[1] || !fb[1])) || (a_pos && b_neg && (!fa[1] || !fb[1]));
-  });
+  return detail::for_each_candidate_plane<FT, D>(
+      pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+        const auto fa = detail::side_flags<FT, D>(a, p, n);
+        const auto fb = detail::side_flags<FT, D>(b, p, n);
+        const bool a_neg = !fa[2], a_pos = !fa[0], b_neg = !fb[2], b_pos = !fb[0];
+        return (a_neg && b_pos && (!fa[1] || !fb[1])) || (a_pos && b_neg && (!fa[1] || !fb[1]));
+      });
 }
 
 /// relint(conv a) ∩ relint(conv b) ≠ ∅, decided exactly.
@@ -197,8 +199,7 @@ bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
 
 /// conv a ∩ conv b ≠ ∅ (closed sets), decided exactly.
 template <class FT, int D>
-bool closed_simplices_meet(const std::vector<Point<FT, D>>& a,
-                           const std::vector<Point<FT, D>>& b) {
+bool closed_simplices_meet(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
   if (strictly_separated<FT, D>(a, b)) return false;
   return common_point<FT, D>({{a, false}, {b, false}}).closed_meet;
 }
@@ -259,7 +260,8 @@ bool elements_nondegenerate(const ElementComplex<FT, D>& x, std::ostream* why = 
         return false;
       }
     if (!affinely_independent<FT, D>(x.coords(e))) {
-      if (why) *why << "element with " << int(e.n) << " vertices is degenerate (not affinely independent)";
+      if (why)
+        *why << "element with " << int(e.n) << " vertices is degenerate (not affinely independent)";
       return false;
     }
   }
@@ -331,8 +333,9 @@ template <class FT, int D>
 bool is_conforming(const ElementComplex<FT, D>& x, std::ostream* why = nullptr) {
   if (!elements_nondegenerate(x, why)) return false;
   if (auto v = find_nonconformity(x)) {
-    if (why) *why << "a " << v->a.dim() << "-element and a " << v->b.dim()
-                  << "-element meet outside a common face";
+    if (why)
+      *why << "a " << v->a.dim() << "-element and a " << v->b.dim()
+           << "-element meet outside a common face";
     return false;
   }
   return true;
@@ -534,7 +537,7 @@ ElementComplex<FT, D> set_union(const ElementComplex<FT, D>& a, const ElementCom
 /// one index (so that set operations compare elements as point sets).
 template <class FT, int D>
 std::pair<ElementComplex<FT, D>, ElementComplex<FT, D>> unify(const ElementComplex<FT, D>& a,
-                                                            const ElementComplex<FT, D>& b) {
+                                                              const ElementComplex<FT, D>& b) {
   std::map<Point<FT, D>, VertexId, PointLess<FT, D>> index;
   std::vector<Point<FT, D>> pts;
   auto remap = [&](const ElementComplex<FT, D>& x) {

@@ -63,7 +63,8 @@ CommonPoint<FT, D> common_point(const std::vector<ConvexGroup<FT, D>>& groups) {
   bool any_strict = false;
   int row = 0;
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    for (std::size_t i = 0; i < groups[g].points.size(); ++i) lp.set_a(first[g] + int(i), row, ET(1));
+    for (std::size_t i = 0; i < groups[g].points.size(); ++i)
+      lp.set_a(first[g] + int(i), row, ET(1));
     lp.set_b(row, ET(1));
     ++row;
   }
@@ -116,7 +117,7 @@ struct LinearRow {
 };
 
 struct FeasibilityResult {
-  bool feasible = false;        ///< all rows hold with >=
+  bool feasible = false;          ///< all rows hold with >=
   bool strictly_feasible = false; ///< all inequality rows hold with > at some point
 };
 

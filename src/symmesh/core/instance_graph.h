@@ -24,11 +24,12 @@ struct InterfaceEdge {
   std::string label() const { return trivial ? "I" : to_string(a) + " / " + to_string(b); }
 };
 
-using InstanceGraph =
-    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, TemplateNode, InterfaceEdge>;
+using InstanceGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS,
+                                            TemplateNode, InterfaceEdge>;
 
 template <class FT, int D>
-InstanceGraph instance_graph(const TemplatedStructure<FT, D>& x, const StructureInstance<FT, D>& si) {
+InstanceGraph instance_graph(const TemplatedStructure<FT, D>& x,
+                             const StructureInstance<FT, D>& si) {
   InstanceGraph g(x.templates.size());
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     g[i].template_index = i;

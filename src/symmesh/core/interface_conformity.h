@@ -20,8 +20,8 @@ namespace symmesh::core {
 struct Lemma42Verdict {
   bool holds = true;
   std::size_t pairs_checked = 0;
-  InstanceId a, b;      ///< the failing neighbouring pair (when !holds)
-  int condition = 0;    ///< 1 for (i), 2 for (ii)
+  InstanceId a, b;   ///< the failing neighbouring pair (when !holds)
+  int condition = 0; ///< 1 for (i), 2 for (ii)
   std::string detail;
 };
 

@@ -67,7 +67,8 @@ struct MultiRegionMesh {
 
 /// Def 2.5: {M_1..M_k} is a mesh partition of M.
 template <class FT, int D>
-bool is_mesh_partition(const ElementComplex<FT, D>& m, const std::vector<ElementComplex<FT, D>>& parts,
+bool is_mesh_partition(const ElementComplex<FT, D>& m,
+                       const std::vector<ElementComplex<FT, D>>& parts,
                        std::ostream* why = nullptr) {
   ElementComplex<FT, D> uni;
   uni.points = m.points;

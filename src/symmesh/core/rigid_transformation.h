@@ -76,9 +76,8 @@ public:
 
   /// 2D rotation with rational cosine c and sine s about `center`.
   /// \pre D == 2 and c^2 + s^2 == 1 exactly (a Pythagorean angle)
-  static RigidTransformation rotation_2d(const FT& c, const FT& s, const Vec& center)
-    requires(D == 2)
-  {
+  static RigidTransformation rotation_2d(const FT& c, const FT& s,
+                                         const Vec& center) requires(D == 2) {
     if (c * c + s * s != FT(1))
       throw std::invalid_argument("rotation: cos^2 + sin^2 != 1 (not a rational rotation)");
     Mat a;
@@ -91,10 +90,8 @@ public:
 
   /// 3D rotation from an integer (or rational) quaternion q = (w, x, y, z) != 0 about `center`.
   /// R = (1/|q|^2) * (Cayley/Euler-Rodrigues matrix), exactly orthogonal for every q != 0.
-  static RigidTransformation rotation_quaternion(const FT& w, const FT& x, const FT& y,
-                                                 const FT& z, const Vec& center)
-    requires(D == 3)
-  {
+  static RigidTransformation rotation_quaternion(const FT& w, const FT& x, const FT& y, const FT& z,
+                                                 const Vec& center) requires(D == 3) {
     const FT q = w * w + x * x + y * y + z * z;
     if (q == 0) throw std::invalid_argument("rotation: quaternion is zero");
     Mat a;

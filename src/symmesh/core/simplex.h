@@ -1,4 +1,5 @@
-/// Definition A.17 (k-simplex) and A.9 (facets and faces of a simplex) — spec/definitions.md#def-a-17
+/// Definition A.17 (k-simplex) and A.9 (facets and faces of a simplex) —
+/// spec/definitions.md#def-a-17
 ///
 /// A simplex is stored combinatorially as the sorted tuple of its vertex indices into a point
 /// array. Two simplices over the same point array are the same set exactly when their tuples
@@ -22,7 +23,8 @@ struct Simplex {
   Simplex() = default;
   Simplex(std::initializer_list<VertexId> ids) {
     /// \pre 1 <= ids.size() <= 4 and the ids are pairwise distinct
-    if (ids.size() == 0 || ids.size() > 4) throw std::invalid_argument("simplex needs 1..4 vertices");
+    if (ids.size() == 0 || ids.size() > 4)
+      throw std::invalid_argument("simplex needs 1..4 vertices");
     for (VertexId id : ids) v[n++] = id;
     normalize();
   }

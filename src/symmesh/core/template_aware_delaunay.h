@@ -26,7 +26,7 @@ bool is_template_aware_locally_delaunay(const StructureInstance<FT, D>& si, std:
 /// Every facet of every mesh template is template-aware locally Delaunay.
 template <class FT, int D>
 bool all_template_facets_template_aware_locally_delaunay(const TemplatedStructure<FT, D>& x,
-                                                          const StructureInstance<FT, D>& si) {
+                                                         const StructureInstance<FT, D>& si) {
   for (std::size_t i = 0; i < x.templates.size(); ++i)
     for (const auto& f : x.templates[i].mesh.elements_of_dimension(D - 1))
       if (!is_template_aware_locally_delaunay(si, i, f)) return false;

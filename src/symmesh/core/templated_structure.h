@@ -52,7 +52,9 @@ struct InstanceSpec {
 /// (i, g): the g-th instance of template i (0-based; the dissertation counts from 1).
 struct InstanceId {
   std::size_t i = 0, g = 0;
-  friend bool operator==(const InstanceId& a, const InstanceId& b) { return a.i == b.i && a.g == b.g; }
+  friend bool operator==(const InstanceId& a, const InstanceId& b) {
+    return a.i == b.i && a.g == b.g;
+  }
   friend bool operator<(const InstanceId& a, const InstanceId& b) {
     return a.i != b.i ? a.i < b.i : a.g < b.g;
   }
@@ -73,7 +75,9 @@ struct TemplatedStructure {
       for (std::size_t g = 0; g < instances[i].size(); ++g) out.push_back({i, g});
     return out;
   }
-  const RigidTransformation<FT, D>& tf(InstanceId id) const { return instances[id.i][id.g].transformation; }
+  const RigidTransformation<FT, D>& tf(InstanceId id) const {
+    return instances[id.i][id.g].transformation;
+  }
   bool all_of_kind(TemplateKind k) const {
     for (const auto& t : templates)
       if (t.kind != k) return false;
@@ -163,7 +167,7 @@ template <class FT, int D>
 struct StructureInstance {
   MultiRegionMesh<FT, D> at;
   std::vector<InstanceId> ids;
-  std::vector<std::vector<VertexId>> vertex_map;     ///< per instance: template vertex -> global
+  std::vector<std::vector<VertexId>> vertex_map;       ///< per instance: template vertex -> global
   std::vector<std::vector<Simplex>> instance_elements; ///< per instance, sorted, global ids
   std::vector<Box<FT, D>> instance_box;
 
@@ -248,7 +252,8 @@ bool geometry_interface_nonempty(const StructureInstance<FT, D>& si, std::size_t
 
 /// All pairs (a, b), a < b, of distinct neighbouring instances (Section 4.2).
 template <class FT, int D>
-std::vector<std::pair<std::size_t, std::size_t>> neighbouring_instances(const StructureInstance<FT, D>& si) {
+std::vector<std::pair<std::size_t, std::size_t>>
+neighbouring_instances(const StructureInstance<FT, D>& si) {
   std::vector<std::pair<std::size_t, std::size_t>> out;
   for_each_overlapping_pair<FT, D>(si.instance_box, [&](std::size_t a, std::size_t b) {
     if (geometry_interface_nonempty(si, a, b)) out.emplace_back(a, b);

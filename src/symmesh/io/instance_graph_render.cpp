@@ -16,7 +16,8 @@ namespace {
 
 std::string node_name(const core::StructureReport& r, std::size_t i) {
   const std::string n = i < r.template_names.size() ? r.template_names[i] : "";
-  return "X" + std::to_string(i + 1) + (n.empty() || n == "X" + std::to_string(i + 1) ? "" : " (" + n + ")");
+  return "X" + std::to_string(i + 1) +
+         (n.empty() || n == "X" + std::to_string(i + 1) ? "" : " (" + n + ")");
 }
 
 std::string escape(const std::string& s) {

@@ -10,7 +10,9 @@ namespace symmesh::io {
 namespace {
 const char* kKernel = "rational (CGAL Epeck, exact)";
 
-std::string condition_name(int c) { return c == 1 ? "(i)" : c == 2 ? "(ii)" : ""; }
+std::string condition_name(int c) {
+  return c == 1 ? "(i)" : c == 2 ? "(ii)" : "";
+}
 } // namespace
 
 std::string report_to_json(const core::StructureReport& r) {
@@ -43,20 +45,22 @@ std::string report_to_json(const core::StructureReport& r) {
     l["reason"] = r.mesh_templates ? "not a templated structure" : "geometry templates";
   }
   j["lemma_4_2"] = l;
-  j["structure_instance_conforming"] = r.templated_structure ? nlohmann::ordered_json(r.at_conforming)
-                                                             : nlohmann::ordered_json(nullptr);
+  j["structure_instance_conforming"] = r.templated_structure
+                                           ? nlohmann::ordered_json(r.at_conforming)
+                                           : nlohmann::ordered_json(nullptr);
   nlohmann::ordered_json g;
   g["nodes"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.templates; ++i)
     g["nodes"].push_back({{"template", i + 1}, {"name", r.template_names.at(i)}});
   g["edges"] = nlohmann::ordered_json::array();
   for (const auto& e : r.graph_edges)
-    g["edges"].push_back({{"templates", {e.template_a + 1, e.template_b + 1}},
-                          {"instances", e.edge.trivial ? nlohmann::ordered_json(nullptr)
-                                                       : nlohmann::ordered_json{core::to_string(e.edge.a),
-                                                                                core::to_string(e.edge.b)}},
-                          {"trivial", e.edge.trivial},
-                          {"label", e.edge.label()}});
+    g["edges"].push_back(
+        {{"templates", {e.template_a + 1, e.template_b + 1}},
+         {"instances", e.edge.trivial ? nlohmann::ordered_json(nullptr)
+                                      : nlohmann::ordered_json{core::to_string(e.edge.a),
+                                                               core::to_string(e.edge.b)}},
+         {"trivial", e.edge.trivial},
+         {"label", e.edge.label()}});
   j["instance_graph"] = g;
   j["structure_instance"] = {{"vertices", r.structure_instance_vertices},
                              {"cells", r.structure_instance_cells}};
@@ -72,19 +76,21 @@ std::string report_to_text(const core::StructureReport& r, const std::string& so
     os << "  not a valid input: " << r.error << "\n";
     return os.str();
   }
-  os << "  templated structure (Def 4.3, Eq. 4.2): " << (r.templated_structure ? "yes" : "NO") << "\n";
+  os << "  templated structure (Def 4.3, Eq. 4.2): " << (r.templated_structure ? "yes" : "NO")
+     << "\n";
   if (!r.templated_structure) {
     os << "  " << r.error << "\n";
     return os.str();
   }
   if (r.mesh_templates) {
-    os << "  templated mesh (Def 4.4, AT conforming): " << (r.templated_mesh ? "yes" : "NO") << "\n";
-    os << "  Lemma 4.2 (interface conformity): "
-       << (r.lemma42.holds ? "holds" : "FAILS") << " on " << r.lemma42.pairs_checked
-       << " neighbouring instance pair(s)\n";
+    os << "  templated mesh (Def 4.4, AT conforming): " << (r.templated_mesh ? "yes" : "NO")
+       << "\n";
+    os << "  Lemma 4.2 (interface conformity): " << (r.lemma42.holds ? "holds" : "FAILS") << " on "
+       << r.lemma42.pairs_checked << " neighbouring instance pair(s)\n";
     if (!r.lemma42.holds)
-      os << "    failing pair " << core::to_string(r.lemma42.a) << ", " << core::to_string(r.lemma42.b)
-         << ": condition " << condition_name(r.lemma42.condition) << " - " << r.lemma42.detail << "\n";
+      os << "    failing pair " << core::to_string(r.lemma42.a) << ", "
+         << core::to_string(r.lemma42.b) << ": condition " << condition_name(r.lemma42.condition)
+         << " - " << r.lemma42.detail << "\n";
     if (!r.lemma42_agrees)
       os << "    INTERNAL: the Lemma 4.2 checker disagrees with the direct conformity check\n";
   } else {

@@ -33,7 +33,9 @@ struct Frame {
   double height() const { return 40 + (maxy - miny) * scale(); }
 };
 
-P to_p(const core::Point<Exact, 2>& q) { return {CGAL::to_double(q[0]), CGAL::to_double(q[1])}; }
+P to_p(const core::Point<Exact, 2>& q) {
+  return {CGAL::to_double(q[0]), CGAL::to_double(q[1])};
+}
 
 std::string colour(std::size_t k) {
   static const char* palette[] = {"#8dd3c7", "#ffffb3", "#bebada", "#fb8072", "#80b1d3",

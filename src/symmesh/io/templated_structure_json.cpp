@@ -90,14 +90,19 @@ std::string type_name(const json& j) {
   return std::string(j.is_array() || j.is_object() ? "an " : "a ") + j.type_name();
 }
 
-std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-std::string dot(const std::string& path, const std::string& key) { return path + "." + key; }
+std::string at(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+std::string dot(const std::string& path, const std::string& key) {
+  return path + "." + key;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Exact numbers
 
 bool all_digits(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
 /// Strips leading zeros (keeps one digit).
@@ -190,7 +195,8 @@ private:
   const std::string what = e.what();
   std::smatch m;
   if (std::regex_search(what, m, re))
-    fail(source, "malformed JSON at line " + m[1].str() + " column " + m[2].str() + ": " + m[3].str());
+    fail(source,
+         "malformed JSON at line " + m[1].str() + " column " + m[2].str() + ": " + m[3].str());
   const auto colon = what.find("] ");
   fail(source, "malformed JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
 }
@@ -199,7 +205,8 @@ private:
 // Field access
 
 /// Rejects fields of `obj` other than `allowed`.
-void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> allowed) {
+void check_keys(const json& obj, const std::string& path,
+                std::initializer_list<const char*> allowed) {
   for (const auto& item : obj.items()) {
     const std::string& k = item.key();
     if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return k == a; })) {
@@ -231,17 +238,20 @@ std::string get_string(const json& j, const std::string& path) {
 
 long long get_integer(const json& j, const std::string& path, long long lo, long long hi,
                       const std::string& what = "an integer") {
-  if (j.is_number_float()) fail(path, "expected " + what + ", got the non-integer number " + j.dump());
+  if (j.is_number_float())
+    fail(path, "expected " + what + ", got the non-integer number " + j.dump());
   if (!j.is_number_integer()) fail(path, "expected " + what + ", got " + type_name(j));
   if (j.is_number_unsigned()) {
     const auto u = j.get<std::uint64_t>();
     if (u > static_cast<std::uint64_t>(hi) || (lo > 0 && u < static_cast<std::uint64_t>(lo)))
-      fail(path, j.dump() + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+      fail(path,
+           j.dump() + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
     return static_cast<long long>(u);
   }
   const auto v = j.get<std::int64_t>();
   if (v < lo || v > hi)
-    fail(path, j.dump() + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+    fail(path,
+         j.dump() + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
   return v;
 }
 
@@ -250,29 +260,34 @@ Exact get_exact(const json& j, const std::string& path) {
   if (j.is_number_integer()) return parse_exact(j.dump(), path);
   if (j.is_number_float())
     fail(path, "the JSON number " + j.dump() +
-                   " is not exact: give non-integer (and very large) numbers as strings, e.g. \"0.25\" or \"1/4\"");
-  fail(path, "expected an exact number (a string such as \"3/5\" or \"-0.25\", or a JSON integer), got " +
-                 type_name(j));
+                   " is not exact: give non-integer (and very large) numbers as strings, e.g. "
+                   "\"0.25\" or \"1/4\"");
+  fail(path,
+       "expected an exact number (a string such as \"3/5\" or \"-0.25\", or a JSON integer), got " +
+           type_name(j));
 }
 
 template <int D>
-core::Point<Exact, D> get_point(const json& j, const std::string& path, const char* what = "coordinates") {
+core::Point<Exact, D> get_point(const json& j, const std::string& path,
+                                const char* what = "coordinates") {
   expect_array(j, path, "an array of " + std::to_string(D) + " " + what);
   if (j.size() != std::size_t(D))
-    fail(path, "expected " + std::to_string(D) + " " + what + " (dimension " + std::to_string(D) + "), got " +
-                   std::to_string(j.size()));
+    fail(path, "expected " + std::to_string(D) + " " + what + " (dimension " + std::to_string(D) +
+                   "), got " + std::to_string(j.size()));
   core::Point<Exact, D> p;
   for (int d = 0; d < D; ++d) p[d] = get_exact(j[std::size_t(d)], at(path, std::size_t(d)));
   return p;
 }
 
 template <int D>
-std::array<int, D> get_int_array(const json& j, const std::string& path, long long lo, long long hi) {
+std::array<int, D> get_int_array(const json& j, const std::string& path, long long lo,
+                                 long long hi) {
   expect_array(j, path, "an array of " + std::to_string(D) + " integers");
   if (j.size() != std::size_t(D))
     fail(path, "expected " + std::to_string(D) + " integers, got " + std::to_string(j.size()));
   std::array<int, D> a{};
-  for (int d = 0; d < D; ++d) a[d] = int(get_integer(j[std::size_t(d)], at(path, std::size_t(d)), lo, hi));
+  for (int d = 0; d < D; ++d)
+    a[d] = int(get_integer(j[std::size_t(d)], at(path, std::size_t(d)), lo, hi));
   return a;
 }
 
@@ -302,7 +317,8 @@ Rigid<D> parse_rotation(const json& r, const std::string& path) {
   if (r.contains("center")) center = get_point<D>(r["center"], dot(path, "center"));
   if constexpr (D == 3) {
     if (!r.contains("quaternion"))
-      fail(path, "a 3D rotation is given by \"quaternion\": [w, x, y, z] (and an optional \"center\")");
+      fail(path,
+           "a 3D rotation is given by \"quaternion\": [w, x, y, z] (and an optional \"center\")");
     check_keys(r, path, {"quaternion", "center"});
     const std::string qp = dot(path, "quaternion");
     const json& q = r["quaternion"];
@@ -310,12 +326,14 @@ Rigid<D> parse_rotation(const json& r, const std::string& path) {
     if (q.size() != 4) fail(qp, "expected 4 numbers [w, x, y, z], got " + std::to_string(q.size()));
     std::array<Exact, 4> c;
     for (std::size_t k = 0; k < 4; ++k) c[k] = get_exact(q[k], at(qp, k));
-    return guarded(qp, [&] { return Rigid<D>::rotation_quaternion(c[0], c[1], c[2], c[3], center); });
+    return guarded(qp,
+                   [&] { return Rigid<D>::rotation_quaternion(c[0], c[1], c[2], c[3], center); });
   } else {
     if (r.contains("quaternion")) fail(dot(path, "quaternion"), "quaternion rotations are 3D only");
     if (r.contains("order")) {
       check_keys(r, path, {"order", "k", "center"});
-      const long long n = get_integer(r["order"], dot(path, "order"), 1, 1000000000, "a positive integer");
+      const long long n =
+          get_integer(r["order"], dot(path, "order"), 1, 1000000000, "a positive integer");
       long long k = 1;
       if (r.contains("k")) k = get_integer(r["k"], dot(path, "k"), -1000000000, 1000000000);
       // The angle 2πk/n in lowest terms 2πk'/n'; only n' ∈ {1, 2, 4} has rational cos and sin.
@@ -342,7 +360,8 @@ Rigid<D> parse_rotation(const json& r, const std::string& path) {
       const Exact s = get_exact(require(r, "sin", path), dot(path, "sin"));
       return guarded(path, [&] { return Rigid<D>::rotation_2d(c, s, center); });
     }
-    fail(path, "a 2D rotation is given by \"cos\" and \"sin\" or by \"order\" and \"k\" (and an optional \"center\")");
+    fail(path, "a 2D rotation is given by \"cos\" and \"sin\" or by \"order\" and \"k\" (and an "
+               "optional \"center\")");
   }
 }
 
@@ -350,12 +369,15 @@ template <int D>
 Rigid<D> parse_transformation(const json& t, const std::string& path, int depth = 0) {
   if (depth > kMaxComposeDepth) fail(path, "transformations are nested too deeply");
   expect_object(t, path, "a transformation object");
-  if (t.empty()) fail(path, std::string("empty transformation: expected exactly one of ") + kTransformationKinds);
+  if (t.empty())
+    fail(path,
+         std::string("empty transformation: expected exactly one of ") + kTransformationKinds);
   if (t.contains("matrix")) {
     check_keys(t, path, {"matrix", "translation"});
     const std::string mp = dot(path, "matrix");
     const json& m = t["matrix"];
-    expect_array(m, mp, "a " + std::to_string(D) + "x" + std::to_string(D) + " matrix (array of rows)");
+    expect_array(m, mp,
+                 "a " + std::to_string(D) + "x" + std::to_string(D) + " matrix (array of rows)");
     if (m.size() != std::size_t(D))
       fail(mp, "expected " + std::to_string(D) + " rows, got " + std::to_string(m.size()));
     typename Rigid<D>::Mat a;
@@ -371,8 +393,8 @@ Rigid<D> parse_transformation(const json& t, const std::string& path, int depth 
     auto it = t.begin();
     const std::string k1 = it.key();
     const std::string k2 = (++it).key();
-    fail(path, "a transformation has exactly one key, got " + quote_text(k1) + " and " + quote_text(k2) +
-                   " (use \"compose\" to combine transformations)");
+    fail(path, "a transformation has exactly one key, got " + quote_text(k1) + " and " +
+                   quote_text(k2) + " (use \"compose\" to combine transformations)");
   }
   const std::string kind = t.begin().key();
   const json& v = t.begin().value();
@@ -404,25 +426,29 @@ Rigid<D> parse_transformation(const json& t, const std::string& path, int depth 
     expect_array(v, vp, "a non-empty array of transformations");
     if (v.empty()) fail(vp, "expected at least one transformation");
     Rigid<D> acc;
-    for (std::size_t k = 0; k < v.size(); ++k) acc = acc * parse_transformation<D>(v[k], at(vp, k), depth + 1);
+    for (std::size_t k = 0; k < v.size(); ++k)
+      acc = acc * parse_transformation<D>(v[k], at(vp, k), depth + 1);
     return acc;
   }
-  fail(path, "unknown transformation " + quote_text(kind) + " (expected one of: " + kTransformationKinds + ")");
+  fail(path, "unknown transformation " + quote_text(kind) +
+                 " (expected one of: " + kTransformationKinds + ")");
 }
 
 // ---------------------------------------------------------------------------------------------
 // Polygons (2D geometry templates): validation and exact constrained Delaunay triangulation
 
 struct Ring {
-  std::string path;                        // e.g. templates[0].polygon or templates[0].holes[1]
-  std::vector<core::Point<Exact, 2>> pts;  // implicitly closed
-  std::size_t first = 0;                   // global index of pts[0]
+  std::string path;                       // e.g. templates[0].polygon or templates[0].holes[1]
+  std::vector<core::Point<Exact, 2>> pts; // implicitly closed
+  std::size_t first = 0;                  // global index of pts[0]
 };
 
 using K = CGAL::Epeck;
 using P2 = K::Point_2;
 
-P2 to_cgal(const core::Point<Exact, 2>& p) { return P2(p[0], p[1]); }
+P2 to_cgal(const core::Point<Exact, 2>& p) {
+  return P2(p[0], p[1]);
+}
 
 struct Edge {
   std::size_t ring, k; // edge from ring.pts[k] to ring.pts[(k+1) % n]
@@ -433,7 +459,8 @@ struct Edge {
 std::string edge_name(const std::vector<Ring>& rings, const Edge& e) {
   const Ring& r = rings[e.ring];
   const std::string base = r.path.substr(r.path.rfind('.') + 1);
-  return base + "[" + std::to_string(e.k) + "]-" + base + "[" + std::to_string((e.k + 1) % r.pts.size()) + "]";
+  return base + "[" + std::to_string(e.k) + "]-" + base + "[" +
+         std::to_string((e.k + 1) % r.pts.size()) + "]";
 }
 
 /// The rings have pairwise disjoint boundaries except for consecutive edges of one ring, which
@@ -448,7 +475,8 @@ void check_simple_and_disjoint(const std::vector<Ring>& rings) {
       edges.push_back({r, k, to_cgal(p), to_cgal(q), std::min(p[0], q[0]), std::max(p[0], q[0])});
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return x.xmin < y.xmin; });
+  std::sort(edges.begin(), edges.end(),
+            [](const Edge& x, const Edge& y) { return x.xmin < y.xmin; });
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t j = i + 1; j < edges.size() && !(edges[i].xmax < edges[j].xmin); ++j) {
       const Edge& e = edges[i];
@@ -488,7 +516,8 @@ using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
 using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
+using CDT =
+    CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 
 /// Nesting level of every face: the number of constraint crossings on a path from the infinite
 /// face. Flood-fills each level without crossing constraints; crossings seed the next level.
@@ -523,7 +552,8 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
   std::vector<Ring> rings;
   auto read_ring = [&](const json& j, const std::string& path) {
     expect_array(j, path, "an array of [x, y] vertices");
-    if (j.size() < 3) fail(path, "a polygon needs at least 3 vertices, got " + std::to_string(j.size()));
+    if (j.size() < 3)
+      fail(path, "a polygon needs at least 3 vertices, got " + std::to_string(j.size()));
     Ring r;
     r.path = path;
     for (std::size_t k = 0; k < j.size(); ++k) r.pts.push_back(get_point<2>(j[k], at(path, k)));
@@ -545,8 +575,9 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
     for (std::size_t k = 0; k < r.pts.size(); ++k) {
       auto [it, inserted] = seen.emplace(r.pts[k], at(r.path, k));
       if (!inserted)
-        fail(at(r.path, k), "repeated vertex (same coordinates as " + it->second +
-                                "; polygons are closed implicitly, do not repeat the first vertex)");
+        fail(at(r.path, k),
+             "repeated vertex (same coordinates as " + it->second +
+                 "; polygons are closed implicitly, do not repeat the first vertex)");
     }
   }
   check_simple_and_disjoint(rings);
@@ -562,7 +593,8 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
     if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), v, K()) != CGAL::ON_BOUNDED_SIDE)
       fail(rings[h].path, "the hole is not inside the polygon");
     for (std::size_t o = 1; o < rings.size(); ++o)
-      if (o != h && CGAL::bounded_side_2(polys[o].begin(), polys[o].end(), v, K()) == CGAL::ON_BOUNDED_SIDE)
+      if (o != h &&
+          CGAL::bounded_side_2(polys[o].begin(), polys[o].end(), v, K()) == CGAL::ON_BOUNDED_SIDE)
         fail(rings[h].path, "the hole lies inside another hole (" +
                                 rings[o].path.substr(rings[o].path.rfind('.') + 1) + ")");
   }
@@ -588,7 +620,8 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
     for (const auto& p : r.pts) m.points.push_back(p);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     if (f->info().in_domain())
-      m.elements.push_back(core::Simplex{core::VertexId(f->vertex(0)->info()), core::VertexId(f->vertex(1)->info()),
+      m.elements.push_back(core::Simplex{core::VertexId(f->vertex(0)->info()),
+                                         core::VertexId(f->vertex(1)->info()),
                                          core::VertexId(f->vertex(2)->info())});
   if (m.elements.empty()) fail(dot(tpath, "polygon"), "the polygon bounds no area");
   return m;
@@ -614,7 +647,8 @@ core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpa
     m.points.push_back(get_point<D>(vj[k], at(vp, k)));
     auto [it, inserted] = seen.emplace(m.points.back(), k);
     if (!inserted)
-      fail(at(vp, k), "duplicate vertex (same coordinates as vertices[" + std::to_string(it->second) + "])");
+      fail(at(vp, k),
+           "duplicate vertex (same coordinates as vertices[" + std::to_string(it->second) + "])");
   }
   const std::size_t nv = m.points.size();
   std::vector<bool> used(nv, false);
@@ -622,10 +656,12 @@ core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpa
   for (std::size_t c = 0; c < cj.size(); ++c) {
     const std::string path = at(cp, c);
     const json& cell = cj[c];
-    const std::string shape = D == 2 ? "a triangle: 3 vertex indices" : "a tetrahedron: 4 vertex indices";
+    const std::string shape =
+        D == 2 ? "a triangle: 3 vertex indices" : "a tetrahedron: 4 vertex indices";
     expect_array(cell, path, shape);
     if (cell.size() != std::size_t(D + 1))
-      fail(path, "a cell in " + std::to_string(D) + "D is " + shape + ", got " + std::to_string(cell.size()));
+      fail(path, "a cell in " + std::to_string(D) + "D is " + shape + ", got " +
+                     std::to_string(cell.size()));
     std::array<core::VertexId, 4> ids{};
     for (std::size_t k = 0; k < cell.size(); ++k) {
       const json& v = cell[k];
@@ -633,10 +669,12 @@ core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpa
         fail(at(path, k), "a vertex index must be a JSON integer, got " + type_name(v) +
                               (v.is_number_float() ? " " + v.dump() : ""));
       if (v.is_number_unsigned() ? v.get<std::uint64_t>() >= nv : true)
-        fail(path, "vertex index " + v.dump() + " out of range (" + std::to_string(nv) + " vertices)");
+        fail(path,
+             "vertex index " + v.dump() + " out of range (" + std::to_string(nv) + " vertices)");
       ids[k] = core::VertexId(v.get<std::uint64_t>());
       for (std::size_t l = 0; l < k; ++l)
-        if (ids[l] == ids[k]) fail(path, "vertex index " + std::to_string(ids[k]) + " appears twice");
+        if (ids[l] == ids[k])
+          fail(path, "vertex index " + std::to_string(ids[k]) + " appears twice");
       used[ids[k]] = true;
     }
     const core::Simplex s = core::Simplex::from_range(ids.data(), ids.data() + D + 1);
@@ -668,8 +706,9 @@ std::vector<core::InstanceSpec<Exact, D>> read_instances(const json& tj, const s
     spec.transformation =
         parse_transformation<D>(require(inst, "transformation", gp), dot(gp, "transformation"));
     if (inst.contains("region"))
-      spec.region = int(get_integer(inst["region"], dot(gp, "region"), std::numeric_limits<int>::min(),
-                                    std::numeric_limits<int>::max()));
+      spec.region =
+          int(get_integer(inst["region"], dot(gp, "region"), std::numeric_limits<int>::min(),
+                          std::numeric_limits<int>::max()));
     out.push_back(std::move(spec));
   }
   return out;
@@ -685,7 +724,8 @@ core::TemplatedStructure<Exact, D> read_structure(const json& root) {
     expect_object(tj, tp, "a template object");
     check_keys(tj, tp, {"name", "kind", "vertices", "cells", "polygon", "holes", "instances"});
     core::Template<Exact, D> t;
-    t.name = tj.contains("name") ? get_string(tj["name"], dot(tp, "name")) : "X" + std::to_string(i + 1);
+    t.name =
+        tj.contains("name") ? get_string(tj["name"], dot(tp, "name")) : "X" + std::to_string(i + 1);
     if (tj.contains("kind")) {
       const std::string kind = get_string(tj["kind"], dot(tp, "kind"));
       if (kind == "mesh")
@@ -693,17 +733,24 @@ core::TemplatedStructure<Exact, D> read_structure(const json& root) {
       else if (kind == "geometry")
         t.kind = core::TemplateKind::geometry;
       else
-        fail(dot(tp, "kind"), "unknown kind " + quote_text(kind) + " (expected \"mesh\" or \"geometry\")");
+        fail(dot(tp, "kind"),
+             "unknown kind " + quote_text(kind) + " (expected \"mesh\" or \"geometry\")");
     }
     const bool has_polygon = tj.contains("polygon");
     if (tj.contains("holes") && !has_polygon) fail(dot(tp, "holes"), "\"holes\" needs \"polygon\"");
     if (has_polygon) {
-      if (D != 2) fail(dot(tp, "polygon"), "\"polygon\" is for 2D geometry templates only (this file is 3D)");
+      if (D != 2)
+        fail(dot(tp, "polygon"), "\"polygon\" is for 2D geometry templates only (this file is 3D)");
       if (t.kind != core::TemplateKind::geometry)
-        fail(dot(tp, "polygon"), "\"polygon\" is for geometry templates only: add \"kind\": \"geometry\" "
-                                 "or give a mesh template by \"vertices\" and \"cells\"");
+        fail(dot(tp, "polygon"),
+             "\"polygon\" is for geometry templates only: add \"kind\": \"geometry\" "
+             "or give a mesh template by \"vertices\" and \"cells\"");
       for (const char* k : {"vertices", "cells"})
-        if (tj.contains(k)) fail(tp, std::string("give either \"polygon\" or \"vertices\" and \"cells\", not both (found \"") + k + "\")");
+        if (tj.contains(k))
+          fail(tp,
+               std::string(
+                   "give either \"polygon\" or \"vertices\" and \"cells\", not both (found \"") +
+                   k + "\")");
       if constexpr (D == 2) t.mesh = triangulate_polygon(tj, tp);
     } else {
       if (!tj.contains("vertices") && !tj.contains("cells"))
@@ -733,8 +780,9 @@ std::string inline_json(const ojson& j) {
     std::string s = "{";
     bool first = true;
     for (const auto& item : j.items()) {
-      s += (first ? "" : ", ") + ojson(item.key()).dump(-1, ' ', false, ojson::error_handler_t::replace) +
-           ": " + inline_json(item.value());
+      s += (first ? "" : ", ") +
+           ojson(item.key()).dump(-1, ' ', false, ojson::error_handler_t::replace) + ": " +
+           inline_json(item.value());
       first = false;
     }
     return s + "}";
@@ -742,11 +790,13 @@ std::string inline_json(const ojson& j) {
   return j.dump(-1, ' ', false, ojson::error_handler_t::replace);
 }
 
-/// Pretty printing that keeps short arrays and objects (points, cells, transformations) on one line.
+/// Pretty printing that keeps short arrays and objects (points, cells, transformations) on one
+/// line.
 void write_pretty(std::string& out, const ojson& j, int indent, bool force_expand = false) {
   constexpr std::size_t kWidth = 120;
   const std::string flat = inline_json(j);
-  if (!j.is_structured() || j.empty() || (!force_expand && flat.size() + std::size_t(indent) <= kWidth)) {
+  if (!j.is_structured() || j.empty() ||
+      (!force_expand && flat.size() + std::size_t(indent) <= kWidth)) {
     out += flat;
     return;
   }
@@ -849,15 +899,17 @@ std::string element_complex_to_json(const core::ElementComplex<Exact, D>& m) {
 
 Exact parse_exact(const std::string& text, const std::string& field) {
   if (text.empty()) fail(field, "empty string is not a number");
-  if (text.size() > kMaxNumberLength) fail(field, "number has more than " + std::to_string(kMaxNumberLength) + " characters");
+  if (text.size() > kMaxNumberLength)
+    fail(field, "number has more than " + std::to_string(kMaxNumberLength) + " characters");
   {
     std::string l = lower(text);
     if (!l.empty() && (l[0] == '+' || l[0] == '-')) l.erase(0, 1);
     if (l == "nan" || l == "inf" || l == "infinity")
       fail(field, quote_text(text) + " is not allowed: NaN and infinities are not exact numbers");
   }
-  const std::string bad = quote_text(text) + " is not an exact number (expected \"n\", \"n/d\" or a decimal such as "
-                                         "\"-0.25\" or \"1.5e-3\")";
+  const std::string bad = quote_text(text) +
+                          " is not an exact number (expected \"n\", \"n/d\" or a decimal such as "
+                          "\"-0.25\" or \"1.5e-3\")";
   std::size_t i = 0;
   bool negative = false;
   if (text[0] == '+' || text[0] == '-') {
@@ -902,12 +954,14 @@ Exact parse_exact(const std::string& text, const std::string& field) {
       const auto nz = ed.find_first_not_of('0');
       ed = nz == std::string::npos ? "0" : ed.substr(nz);
       if (ed.size() > 6 || std::stol(ed) > kMaxExponent)
-        fail(field, "the exponent of " + quote_text(text) + " is out of range (at most " + std::to_string(kMaxExponent) + ")");
+        fail(field, "the exponent of " + quote_text(text) + " is out of range (at most " +
+                        std::to_string(kMaxExponent) + ")");
       e10 = eneg ? -std::stol(ed) : std::stol(ed);
     }
     e10 -= long(frac_part.size());
     const std::string digits = int_part + frac_part;
-    if (e10 >= 0) return Exact(make_rational(negative, digits + std::string(std::size_t(e10), '0'), "1"));
+    if (e10 >= 0)
+      return Exact(make_rational(negative, digits + std::string(std::size_t(e10), '0'), "1"));
     return Exact(make_rational(negative, digits, "1" + std::string(std::size_t(-e10), '0')));
   }
 }
@@ -916,7 +970,9 @@ std::string exact_to_string(const Exact& x) {
   // Exact values are kept in canonical form (lowest terms, positive denominator); mpq_get_str
   // prints "n" when the denominator is 1.
   const Rational& q = CGAL::exact(x);
-  std::string out(mpz_sizeinbase(mpq_numref(raw_mpq(q)), 10) + mpz_sizeinbase(mpq_denref(raw_mpq(q)), 10) + 3, '\0');
+  std::string out(mpz_sizeinbase(mpq_numref(raw_mpq(q)), 10) +
+                      mpz_sizeinbase(mpq_denref(raw_mpq(q)), 10) + 3,
+                  '\0');
   mpq_get_str(out.data(), 10, raw_mpq(q));
   out.resize(std::char_traits<char>::length(out.c_str()));
   return out;
@@ -936,7 +992,8 @@ AnyStructure parse_templated_structure(const std::string& text, const std::strin
     if (fmt != kFormat)
       fail("symmesh", "unsupported format " + quote_text(fmt) + " (expected \"" + kFormat + "\")");
     if (root.contains("description")) get_string(root["description"], "description");
-    const int dim = int(get_integer(require(root, "dimension", source), "dimension", 2, 3, "the integer 2 or 3"));
+    const int dim = int(
+        get_integer(require(root, "dimension", source), "dimension", 2, 3, "the integer 2 or 3"));
     const json& ts = require(root, "templates", source);
     expect_array(ts, "templates", "an array of templates");
     if (ts.empty()) fail("templates", "no templates");
@@ -964,10 +1021,18 @@ AnyStructure read_templated_structure(const std::string& path) {
   return parse_templated_structure(buf.str(), path);
 }
 
-std::string to_json(const Structure2& x) { return structure_to_json<2>(x); }
-std::string to_json(const Structure3& x) { return structure_to_json<3>(x); }
+std::string to_json(const Structure2& x) {
+  return structure_to_json<2>(x);
+}
+std::string to_json(const Structure3& x) {
+  return structure_to_json<3>(x);
+}
 
-std::string complex_to_json(const core::ElementComplex<Exact, 2>& m) { return element_complex_to_json<2>(m); }
-std::string complex_to_json(const core::ElementComplex<Exact, 3>& m) { return element_complex_to_json<3>(m); }
+std::string complex_to_json(const core::ElementComplex<Exact, 2>& m) {
+  return element_complex_to_json<2>(m);
+}
+std::string complex_to_json(const core::ElementComplex<Exact, 3>& m) {
+  return element_complex_to_json<3>(m);
+}
 
 } // namespace symmesh::io

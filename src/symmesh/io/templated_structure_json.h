@@ -31,7 +31,8 @@ Exact parse_exact(const std::string& text, const std::string& field);
 std::string exact_to_string(const Exact& x);
 
 /// Reads and validates the shape of a templated structure (not yet Eq. 4.2: that is `check`).
-AnyStructure parse_templated_structure(const std::string& text, const std::string& source = "input");
+AnyStructure parse_templated_structure(const std::string& text,
+                                       const std::string& source = "input");
 AnyStructure read_templated_structure(const std::string& path);
 
 /// Writes a structure in the same format (transformations as exact matrix + translation).
