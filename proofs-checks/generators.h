@@ -257,6 +257,7 @@ template <int D>
 auto picture(const GeneratedStructure<D>& s) {
   return [&s] { return structure_picture<D>(s.x); };
 }
+
 /// {"lemma", "recipe", "complexes": {name: <complex JSON>}}.
 template <int D>
 std::string complexes_record(const std::string& lemma, const std::string& recipe,
@@ -264,5 +265,15 @@ std::string complexes_record(const std::string& lemma, const std::string& recipe
 /// The complex drawn as SVG (2D), or "" (3D).
 template <int D>
 std::string complex_picture(const Complex<D>& c);
+
+/// Producers for SYMMESH_PROOF_ASSERT on a single mesh M: called only on failure.
+template <int D>
+auto complex_failure_record(const char* lemma, const std::string& recipe, const Complex<D>& m) {
+  return [lemma, recipe, &m] { return complexes_record<D>(lemma, recipe, {{"M", m}}); };
+}
+template <int D>
+auto picture(const Complex<D>& m) {
+  return [&m] { return complex_picture<D>(m); };
+}
 
 } // namespace symmesh::proofs::gen

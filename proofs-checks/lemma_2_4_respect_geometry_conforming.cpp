@@ -19,13 +19,10 @@ using namespace gen;
 
 constexpr const char* kLemma = "Lemma_2_4";
 
+/// Failure records of this lemma's single-mesh cases (see generators.h).
 template <int D>
 auto record(const std::string& recipe, const Complex<D>& m) {
-  return [recipe, &m] { return complexes_record<D>(kLemma, recipe, {{"M", m}}); };
-}
-template <int D>
-auto picture(const Complex<D>& m) {
-  return [&m] { return complex_picture<D>(m); };
+  return complex_failure_record<D>(kLemma, recipe, m);
 }
 
 /// Every cell of m respects the convex set G = ⋂ conv(g_j).
