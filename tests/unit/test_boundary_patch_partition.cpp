@@ -1,0 +1,143 @@
+// Unit tests of Algorithm 4.1, Definitions 4.7–4.9 and Section 5.2.2 on small hand-made
+// structures whose answers are worked out in the comments (spec/boundary-patches.md).
+#include <gtest/gtest.h>
+
+#include "symmesh/core/boundary_patch_partition.h"
+#include "symmesh/core/kernel.h"
+#include "symmesh/io/templated_structure_json.h"
+
+using namespace symmesh::core;
+using symmesh::Exact;
+
+namespace {
+
+template <int D>
+TemplatedStructure<Exact, D> parse(const std::string& json) {
+  return std::get<TemplatedStructure<Exact, D>>(symmesh::io::parse_templated_structure(json));
+}
+
+std::string square_with(const std::string& instances) {
+  return R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [{"kind": "geometry",
+    "polygon": [["0","0"],["1","0"],["1","1"],["0","1"]], "instances": [)" +
+         instances + "]}]}";
+}
+
+Point<Exact, 2> p2(int x, int y, int d = 1) {
+  return Point<Exact, 2>{{Exact(x) / d, Exact(y) / d}};
+}
+
+} // namespace
+
+// Figure 6.5: a square and its mirror image in x = 0. Patches: the mirror edge x = 0 and the
+// rest (one connected polyline); each related only to itself; regular (the reflection fixes the
+// mirror edge pointwise).
+TEST(BoundaryPatchPartition, ReflectionHasTwoPatchesAndIsRegular) {
+  const auto x = parse<2>(square_with(
+      R"({"transformation": {"identity": {}}}, {"transformation": {"reflection": {"normal": ["1","0"]}}})"));
+  const auto b = boundary_patch_partition(x);
+  std::ostringstream why;
+  ASSERT_TRUE(b.is_valid(&why)) << why.str();
+  EXPECT_EQ(b.patch_count(0, 1), 2u);
+  EXPECT_EQ(b.patch_count(0, 0), 0u);
+  EXPECT_EQ(b.classes.size(), 2u);
+  EXPECT_TRUE(b.regular());
+  const auto all = enumerate_compositions(b, 1000);
+  EXPECT_TRUE(regular_by_enumeration(b, all));
+}
+
+// Figure 4.11: the square touches a copy of itself rotated by 180° about (1, 1/2): the right edge
+// is mapped onto itself reversed, so identity and 𝕋_{T11,T12} differ on it: irregular.
+TEST(BoundaryPatchPartition, FlippedSelfContactIsIrregular) {
+  const auto x = parse<2>(square_with(
+      R"({"transformation": {"identity": {}}}, {"transformation": {"rotation": {"order": 2, "k": 1, "center": ["1","1/2"]}}})"));
+  const auto b = boundary_patch_partition(x);
+  ASSERT_TRUE(b.is_valid());
+  EXPECT_EQ(b.patch_count(0, 1), 2u);
+  ASSERT_FALSE(b.regular());
+  const auto& w = *b.irregularity;
+  EXPECT_EQ(w.patch, w.target);
+  EXPECT_FALSE(w.symmetry.is_identity());
+  EXPECT_EQ(w.symmetry(p2(1, 0)), p2(1, 1));
+  const auto all = enumerate_compositions(b, 1000);
+  EXPECT_FALSE(regular_by_enumeration(b, all));
+  // Section 5.2.2: no boundary vertex may move in an irregular structure.
+  EXPECT_FALSE(valid_vertex_movement(b, 0, p2(2, 1, 2)).can_move);
+}
+
+// Figure 6.7: a 90° slice with four rotated instances. Facet patches H1, H2 (related) and the
+// rest; the centre is a 0-dimensional patch (opposite instances meet only there).
+TEST(BoundaryPatchPartition, RotationalSliceHasThreeFacetPatches) {
+  const auto x = parse<2>(R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [
+    {"kind": "geometry", "polygon": [["0","0"],["1","-1"],["1","1"]], "instances": [
+      {"transformation": {"rotation": {"order": 4, "k": 0}}},
+      {"transformation": {"rotation": {"order": 4, "k": 1}}},
+      {"transformation": {"rotation": {"order": 4, "k": 2}}},
+      {"transformation": {"rotation": {"order": 4, "k": 3}}}]}]})");
+  const auto b = boundary_patch_partition(x);
+  ASSERT_TRUE(b.is_valid());
+  EXPECT_EQ(b.patch_count(0, 1), 3u);
+  EXPECT_EQ(b.patch_count(0, 0), 1u);
+  EXPECT_TRUE(b.regular());
+  const auto h1 = b.face_patch[0][*b.locate(0, p2(1, -1, 2))];
+  const auto h2 = b.face_patch[0][*b.locate(0, p2(1, 1, 2))];
+  const auto rest = b.face_patch[0][*b.locate(0, p2(1, 0))];
+  EXPECT_EQ(b.patches[h1].relation_class, b.patches[h2].relation_class);
+  EXPECT_NE(b.patches[h1].relation_class, b.patches[rest].relation_class);
+  // Lemma 4.4 (i): the witness composition maps H1 onto H2.
+  const auto c = b.composition_between(h1, h2);
+  EXPECT_EQ(c.map(p2(1, -1)), p2(1, 1));
+  // Figure 5.11: the centre cannot move; a point inside H1 moves along H1.
+  EXPECT_FALSE(valid_vertex_movement(b, 0, p2(0, 0)).can_move);
+  const auto mv = valid_vertex_movement(b, 0, p2(1, -1, 2));
+  EXPECT_TRUE(mv.can_move);
+  EXPECT_EQ(mv.dimension, 1);
+  const auto all = enumerate_compositions(b, 10000);
+  EXPECT_TRUE(regular_by_enumeration(b, all));
+}
+
+// A glide reflection by a tiny offset would need ~10^5 composed images: the guard stops it.
+TEST(BoundaryPatchPartition, CompositionExplosionIsStopped) {
+  const auto x = parse<2>(R"({"symmesh": "templated-structure/1", "dimension": 2, "templates": [
+    {"kind": "geometry", "polygon": [["0","0"],["1","0"],["0","-1"]], "instances": [
+      {"transformation": {"identity": {}}},
+      {"transformation": {"compose": [{"translation": ["1/100000","0"]},
+                                      {"reflection": {"normal": ["0","1"]}}]}}]}]})");
+  BppOptions o;
+  o.max_compositions = 1000;
+  EXPECT_THROW(boundary_patch_partition(x, o), CompositionLimitExceeded);
+}
+
+// 3D: the unit cube and its mirror image in x = 0: the mirror face and the rest.
+TEST(BoundaryPatchPartition, MirroredCubeHalvesHaveTwoFacetPatches) {
+  const auto x = parse<3>(R"({"symmesh": "templated-structure/1", "dimension": 3, "templates": [
+    {"kind": "geometry",
+     "vertices": [["0","0","0"],["1","0","0"],["1","1","0"],["0","1","0"],
+                  ["0","0","1"],["1","0","1"],["1","1","1"],["0","1","1"]],
+     "cells": [[0,1,3,4],[1,2,3,6],[1,4,5,6],[3,4,6,7],[1,3,4,6]],
+     "instances": [{"transformation": {"identity": {}}},
+                   {"transformation": {"reflection": {"normal": ["1","0","0"]}}}]}]})");
+  const auto b = boundary_patch_partition(x);
+  std::ostringstream why;
+  ASSERT_TRUE(b.is_valid(&why)) << why.str();
+  EXPECT_EQ(b.patch_count(0, 2), 2u);
+  EXPECT_TRUE(b.regular());
+}
+
+// 3D rotational slice about the z axis: two slice planes (related), the rest, and the axis.
+TEST(BoundaryPatchPartition, RotationalSlice3DHasAxisPatch) {
+  const auto x = parse<3>(R"({"symmesh": "templated-structure/1", "dimension": 3, "templates": [
+    {"kind": "geometry",
+     "vertices": [["0","0","0"],["1","-1","0"],["1","1","0"],["0","0","1"],["1","-1","1"],["1","1","1"]],
+     "cells": [[0,1,2,3],[1,2,3,4],[2,3,4,5]],
+     "instances": [
+       {"transformation": {"identity": {}}},
+       {"transformation": {"signed_permutation": {"perm": [1,0,2], "sign": [-1,1,1]}}},
+       {"transformation": {"signed_permutation": {"perm": [0,1,2], "sign": [-1,-1,1]}}},
+       {"transformation": {"signed_permutation": {"perm": [1,0,2], "sign": [1,-1,1]}}}]}]})");
+  const auto b = boundary_patch_partition(x);
+  std::ostringstream why;
+  ASSERT_TRUE(b.is_valid(&why)) << why.str();
+  EXPECT_EQ(b.patch_count(0, 2), 3u);
+  EXPECT_EQ(b.patch_count(0, 1), 1u);
+  EXPECT_TRUE(b.regular());
+}
