@@ -18,18 +18,22 @@ void register_lemma_2_4(std::vector<Property>&);
 void register_lemma_2_5(std::vector<Property>&);
 void register_lemma_4_1(std::vector<Property>&);
 void register_lemma_4_2(std::vector<Property>&);
+void register_lemma_4_3(std::vector<Property>&);
+void register_lemma_4_4(std::vector<Property>&);
 void register_lemma_4_5(std::vector<Property>&);
 void register_lemma_6_1(std::vector<Property>&);
 void register_lemma_6_2(std::vector<Property>&);
 void register_at_multi_region_equivalence(std::vector<Property>&);
+void register_bpp_invariance(std::vector<Property>&);
 
 const std::vector<Property>& all_properties() {
   static const std::vector<Property> props = [] {
     std::vector<Property> p;
     for (RegisterFn f :
          {register_lemma_2_1, register_lemma_2_2, register_lemma_2_3, register_lemma_2_4,
-          register_lemma_2_5, register_lemma_4_1, register_lemma_4_2, register_lemma_4_5,
-          register_lemma_6_1, register_lemma_6_2, register_at_multi_region_equivalence})
+          register_lemma_2_5, register_lemma_4_1, register_lemma_4_2, register_lemma_4_3,
+          register_lemma_4_4, register_lemma_4_5, register_lemma_6_1, register_lemma_6_2,
+          register_at_multi_region_equivalence, register_bpp_invariance})
       f(p);
     return p;
   }();
