@@ -249,7 +249,15 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x) {
       for (auto& p : s) p = x.tf(id)(p);
     facets.push_back(std::move(f));
   }
-  for (const auto& [a, b] : neighbouring_instances(si)) {
+  // interf_geo = bnd ∩ bnd for non-overlapping instances, so two instances are neighbours iff
+  // some two boundary facets meet; this avoids the cell-pair tests of neighbouring_instances.
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;
+  for_each_overlapping_pair<FT, D>(si.instance_box, [&](std::size_t a, std::size_t b) {
+    candidates.emplace_back(std::min(a, b), std::max(a, b));
+    return true;
+  });
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [a, b] : candidates) {
     const auto pieces = geometry_interface_pieces<FT, D>(facets[a], facets[b]);
     if (pieces.empty()) continue;
     const auto ia = si.ids[a], ib = si.ids[b];
@@ -408,10 +416,12 @@ struct Cuts {
 
 template <class FT>
 struct PlaneFrame {
-  Point<FT, 3> normal, origin;
+  Point<FT, 3> normal;
+  FT offset; ///< normal · x on the plane
   int drop = 2, u = 0, v = 1;
-  explicit PlaneFrame(const PointVec<FT, 3>& tri) : origin(tri[0]) {
+  explicit PlaneFrame(const PointVec<FT, 3>& tri) {
     normal = cross3<FT>(tri[1] - tri[0], tri[2] - tri[0]);
+    offset = dot<FT, 3>(normal, tri[0]);
     drop = 0;
     for (int a = 1; a < 3; ++a)
       if (CGAL::abs(normal[a]) > CGAL::abs(normal[drop])) drop = a;
@@ -422,7 +432,7 @@ struct PlaneFrame {
     Point<FT, 3> p;
     p[u] = a;
     p[v] = b;
-    p[drop] = (dot<FT, 3>(normal, origin) - normal[u] * a - normal[v] * b) / normal[drop];
+    p[drop] = (offset - normal[u] * a - normal[v] * b) / normal[drop];
     return p;
   }
 };
@@ -448,7 +458,9 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
     q[2] = p.z();
     return q;
   };
+  using VertexHandle = typename Cdt<FT>::Vertex_handle;
   std::vector<Cdt<FT>> cdts(tris.size());
+  std::vector<std::map<VertexHandle, Point<FT, 3>>> lifted(tris.size());
   std::vector<PlaneFrame<FT>> frames;
   PointSet<FT, 3> all;
   for (std::size_t k = 0; k < tris.size(); ++k) {
@@ -472,24 +484,22 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
         cdt.insert_constraint(proj(pt(s->source())), proj(pt(s->target())));
     }
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      all.insert(fr.lift(v->point().x(), v->point().y()));
+      all.insert(lifted[k][v] = fr.lift(v->point().x(), v->point().y()));
   }
   BoundarySubdivision<FT, 3> s;
   s.points.assign(all.begin(), all.end());
   add_vertex_faces(s);
+  std::vector<std::map<VertexHandle, VertexId>> ids(tris.size());
+  for (std::size_t k = 0; k < tris.size(); ++k)
+    for (const auto& [h, p] : lifted[k]) ids[k][h] = vertex_id(s, p);
   std::map<std::pair<VertexId, VertexId>, std::size_t> edge_of;
-  auto vid = [&](const PlaneFrame<FT>& fr, const P2& p) {
-    return vertex_id(s, fr.lift(p.x(), p.y()));
-  };
   for (std::size_t k = 0; k < tris.size(); ++k) {
     auto& cdt = cdts[k];
-    const auto& fr = frames[k];
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
       if (!cdt.is_constrained(*e)) continue;
       const auto f = e->first;
       const int i = e->second;
-      VertexId a = vid(fr, f->vertex(cdt.cw(i))->point()),
-               b = vid(fr, f->vertex(cdt.ccw(i))->point());
+      VertexId a = ids[k].at(f->vertex(cdt.cw(i))), b = ids[k].at(f->vertex(cdt.ccw(i)));
       if (a > b) std::swap(a, b);
       if (edge_of.count({a, b})) continue;
       edge_of[{a, b}] = s.faces.size();
@@ -498,7 +508,6 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
   }
   for (std::size_t k = 0; k < tris.size(); ++k) {
     auto& cdt = cdts[k];
-    const auto& fr = frames[k];
     std::map<typename Cdt<FT>::Face_handle, bool> seen;
     for (auto f0 = cdt.finite_faces_begin(); f0 != cdt.finite_faces_end(); ++f0) {
       typename Cdt<FT>::Face_handle h0 = f0;
@@ -512,14 +521,14 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
       while (!stack.empty()) {
         auto h = stack.back();
         stack.pop_back();
-        std::array<VertexId, 3> ids{};
-        for (int i = 0; i < 3; ++i) ids[i] = vid(fr, h->vertex(i)->point());
-        face.pieces.push_back(Simplex{ids[0], ids[1], ids[2]});
+        std::array<VertexId, 3> vids{};
+        for (int i = 0; i < 3; ++i) vids[i] = ids[k].at(h->vertex(i));
+        face.pieces.push_back(Simplex{vids[0], vids[1], vids[2]});
         for (int i = 0; i < 3; ++i) {
-          verts.insert(ids[i]);
-          closure.insert(ids[i]);
-          const VertexId a = std::min(ids[(i + 1) % 3], ids[(i + 2) % 3]);
-          const VertexId b = std::max(ids[(i + 1) % 3], ids[(i + 2) % 3]);
+          verts.insert(vids[i]);
+          closure.insert(vids[i]);
+          const VertexId a = std::min(vids[(i + 1) % 3], vids[(i + 2) % 3]);
+          const VertexId b = std::max(vids[(i + 1) % 3], vids[(i + 2) % 3]);
           if (cdt.is_constrained({h, i})) {
             closure.insert(edge_of.at({a, b}));
             continue;
@@ -572,6 +581,10 @@ close_subdivisions_3d(const TemplatedStructure<FT, 3>& x,
     for (std::size_t t = 0; t < nt; ++t)
       if (dirty[t]) sub[t] = build_subdivision_3d<FT>(tris[t], cuts[t]);
     std::fill(dirty.begin(), dirty.end(), false);
+    std::vector<std::set<std::pair<VertexId, VertexId>>> edges(nt);
+    for (std::size_t t = 0; t < nt; ++t)
+      for (const auto& g : sub[t].faces)
+        if (g.dimension == 1) edges[t].emplace(g.vertices[0], g.vertices[1]);
     bool changed = false;
     auto note = [&](std::size_t t) {
       changed = true;
@@ -610,8 +623,7 @@ close_subdivisions_3d(const TemplatedStructure<FT, 3>& x,
             if (both) {
               VertexId va = vertex_id(dst, a), vb = vertex_id(dst, b);
               if (va > vb) std::swap(va, vb);
-              for (const auto& g : dst.faces)
-                if (g.dimension == 1 && g.vertices[0] == va && g.vertices[1] == vb) is_edge = true;
+              is_edge = edges[m.to_template()].count({va, vb}) > 0;
             }
             if (!is_edge && add_segment(m.to_template(), a, b)) note(m.to_template());
           }
