@@ -4,6 +4,7 @@
 
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/kernel.h"
+#include "symmesh/core/symmetric_boundary_patches.h"
 #include "symmesh/io/templated_structure_json.h"
 
 using namespace symmesh::core;
@@ -140,4 +141,40 @@ TEST(BoundaryPatchPartition, RotationalSlice3DHasAxisPatch) {
   EXPECT_EQ(b.patch_count(0, 2), 3u);
   EXPECT_EQ(b.patch_count(0, 1), 1u);
   EXPECT_TRUE(b.regular());
+}
+
+// Section 6.2 / Algorithm 6.2 special cases on the fixtures agree with Algorithm 4.1 in the
+// number of facet patches per template.
+namespace {
+std::vector<std::size_t> special_counts(const std::vector<SymmetryPatch<Exact>>& sp,
+                                        std::size_t n) {
+  std::vector<std::size_t> c(n, 0);
+  for (const auto& p : sp) ++c[p.template_index];
+  return c;
+}
+std::vector<std::size_t> general_counts(const BoundaryPatchPartition<Exact, 2>& b, std::size_t n) {
+  std::vector<std::size_t> c;
+  for (std::size_t t = 0; t < n; ++t) c.push_back(b.patch_count(t, 1));
+  return c;
+}
+} // namespace
+
+TEST(SymmetricBoundaryPatches, FixturesAgreeWithAlgorithm41) {
+  const std::string dir = SYMMESH_SOURCE_DIR "/data/";
+  auto load = [&](const std::string& f) {
+    return std::get<TemplatedStructure<Exact, 2>>(symmesh::io::read_templated_structure(dir + f));
+  };
+  const auto refl = load("fig_6_5_reflection_bpp.json");
+  EXPECT_EQ(special_counts(reflective_boundary_patches(refl), 1),
+            general_counts(boundary_patch_partition(refl), 1));
+  EXPECT_EQ(general_counts(boundary_patch_partition(refl), 1), std::vector<std::size_t>{2});
+  const auto rot = load("fig_6_7_rotational_slice.json");
+  EXPECT_EQ(
+      special_counts(rotational_boundary_patches(rot, Point<Exact, 2>{{Exact(1), Exact(-1)}}), 1),
+      std::vector<std::size_t>{3});
+  const auto multi = load("fig_6_8_multiregion_rotational.json");
+  EXPECT_EQ(
+      special_counts(rotational_boundary_patches(multi, Point<Exact, 2>{{Exact(1), Exact(0)}}), 2),
+      general_counts(boundary_patch_partition(multi), 2));
+  EXPECT_EQ(general_counts(boundary_patch_partition(multi), 2), (std::vector<std::size_t>{4, 5}));
 }
