@@ -75,6 +75,65 @@ bool agree(const GeneratedStructure<2>& s, const std::vector<core::SymmetryPatch
   return sp && *sp == general_facet_patches(b);
 }
 
+/// Facet patches from direct-neighbour labels: connected (through the closure relation) unions of
+/// faces with equal labels, as sets of (D-1)-faces per template.
+template <int D>
+bool direct_labels_agree(const GeneratedStructure<D>& s) {
+  const auto b = core::boundary_patch_partition(s.x);
+  const auto labels = core::direct_neighbour_labels<Exact, D>(s.x, b.subdivisions);
+  for (std::size_t t = 0; t < b.subdivisions.size(); ++t) {
+    const auto& sub = b.subdivisions[t];
+    std::vector<std::size_t> comp(sub.faces.size());
+    for (std::size_t f = 0; f < comp.size(); ++f) comp[f] = f;
+    auto find = [&](std::size_t k) {
+      while (comp[k] != k) k = comp[k] = comp[comp[k]];
+      return k;
+    };
+    for (std::size_t f = 0; f < comp.size(); ++f)
+      for (std::size_t g : sub.faces[f].closure)
+        if (labels[t][f] == labels[t][g]) comp[find(f)] = find(g);
+    std::map<std::size_t, std::set<std::size_t>> special;
+    for (std::size_t f = 0; f < comp.size(); ++f)
+      if (sub.faces[f].dimension == D - 1) special[find(f)].insert(f);
+    std::set<std::set<std::size_t>> a, g;
+    for (auto& [root, faces] : special) a.insert(faces);
+    for (const auto& p : b.patches)
+      if (p.template_index == t && p.dimension == D - 1) {
+        std::set<std::size_t> faces;
+        for (std::size_t f : p.faces)
+          if (sub.faces[f].dimension == D - 1) faces.insert(f);
+        g.insert(faces);
+      }
+    if (a != g) return false;
+  }
+  return true;
+}
+
+template <int D>
+void add_direct(std::vector<Property>& p) {
+  const std::string d = dim_suffix(D);
+  p.push_back({kKey,
+               "direct_neighbours_agree_with_algorithm_4_1" + d,
+               D,
+               Kind::holds,
+               "Sections 6.2-6.3: on reflective, orthogonal-reflective and rotational structures "
+               "(one symmetry group for all templates) the facet patches are the connected "
+               "regions of equal direct-neighbour sets, as Algorithm 4.1 finds with compositions",
+               [] {
+                 return rc::detail::toProperty([] {
+                   const auto s =
+                       *rc::gen::oneOf(reflective_structure<D>(), rotational_slice_structure<D>(),
+                                       valid_templated_mesh<D>());
+                   if (!core::instanced_by_symmetry_group<Exact, D>(s.x))
+                     RC_DISCARD("templates not instanced by one symmetry group");
+                   RC_TAG(s.x.instances[0].size() == 2 ? "reflection" : "group");
+                   SYMMESH_PROOF_ASSERT(direct_labels_agree<D>(s),
+                                        structure_failure_record<D>(kKey, s), gen::picture<D>(s));
+                 });
+               },
+               {}});
+}
+
 void add(std::vector<Property>& p) {
   p.push_back({kKey,
                "rotational_slice_agrees_with_algorithm_4_1_2d",
@@ -120,6 +179,8 @@ void add(std::vector<Property>& p) {
 
 void register_algorithm_6_2(std::vector<Property>& p) {
   add(p);
+  add_direct<2>(p);
+  add_direct<3>(p);
 }
 
 } // namespace symmesh::proofs

@@ -12,6 +12,7 @@
 /// is therefore also cut at intra-slice region interfaces. Elements are connected (a disconnected
 /// rest is several patches, as in Figure 4.10).
 #pragma once
+#include "symmesh/core/boundary_subdivision.h"
 #include "symmesh/core/element_complex.h"
 #include "symmesh/core/templated_structure.h"
 
@@ -297,6 +298,72 @@ std::vector<SymmetryPatch<FT>> rotational_boundary_patches(const TemplatedStruct
   std::vector<Point<FT, 2>> b_h2;
   for (const auto& p : b_h) b_h2.push_back(rot(p));
   return detail::symmetric_patches<FT>(x, {h1, h2}, {b_h, b_h2});
+}
+
+/// All templates carry the same instance list (T_{i,g} = T_{i,0} ∘ S_g with common S_g) and the S_g
+/// form a group (closed under composition): a reflective, orthogonal-reflective or rotational
+/// templated structure (Sections 6.2–6.4).
+template <class FT, int D>
+bool instanced_by_symmetry_group(const TemplatedStructure<FT, D>& x) {
+  const auto& first = x.instances.at(0);
+  std::vector<RigidTransformation<FT, D>> s;
+  for (const auto& inst : first)
+    s.push_back(first[0].transformation.inverse() * inst.transformation);
+  for (const auto& list : x.instances) {
+    if (list.size() != s.size()) return false;
+    for (std::size_t g = 0; g < list.size(); ++g)
+      if (list[0].transformation.inverse() * list[g].transformation != s[g]) return false;
+  }
+  for (const auto& a : s)
+    for (const auto& b : s)
+      if (std::find(s.begin(), s.end(), a * b) == s.end()) return false;
+  return true;
+}
+
+/// Sections 6.2–6.3 in 2D and 3D: in a structure whose templates all carry the same instance list
+/// (T_0 ∘ S_g), with S_g a symmetry group, no transformation functions beyond the S_g appear, so a
+/// boundary point's patch is fixed by its direct neighbours: the set of copies T_{t,0}^{-1} ∘
+/// T_{s,g} (s ≠ t or g ≠ 0) whose boundary contains it. Evaluated on the faces of a subdivision
+/// (the caller's), returns per template and face the index of its direct-neighbour set; no mapping
+/// is composed. \pre instanced_by_symmetry_group(x)
+template <class FT, int D>
+std::vector<std::vector<std::size_t>>
+direct_neighbour_labels(const TemplatedStructure<FT, D>& x,
+                        const std::vector<BoundarySubdivision<FT, D>>& sub) {
+  if (!instanced_by_symmetry_group(x))
+    throw std::invalid_argument("symmetric BPP: templates are not instanced by one symmetry group");
+  std::vector<std::vector<std::vector<Point<FT, D>>>> facets; // per template, template frame
+  for (const auto& t : x.templates) {
+    const auto b = mesh_boundary(t.mesh);
+    std::vector<std::vector<Point<FT, D>>> f;
+    for (const auto& e : b.elements)
+      if (e.dim() == D - 1) f.push_back(b.coords(e));
+    facets.push_back(std::move(f));
+  }
+  std::map<std::vector<std::size_t>, std::size_t> ids;
+  std::vector<std::vector<std::size_t>> out(x.templates.size());
+  for (std::size_t t = 0; t < x.templates.size(); ++t) {
+    const auto back = x.instances[t][0].transformation.inverse();
+    for (std::size_t f = 0; f < sub[t].faces.size(); ++f) {
+      const auto& p = sub[t].rep[f];
+      std::vector<std::size_t> label;
+      for (std::size_t s = 0; s < x.templates.size(); ++s)
+        for (std::size_t g = 0; g < x.instances[s].size(); ++g) {
+          if (s == t && g == 0) continue;
+          const auto c = back * x.instances[s][g].transformation;
+          for (const auto& facet : facets[s]) {
+            std::vector<Point<FT, D>> moved;
+            for (const auto& q : facet) moved.push_back(c(q));
+            if (point_in_simplex<FT, D>(moved, p)) {
+              label.push_back(s * x.instances[s].size() + g);
+              break;
+            }
+          }
+        }
+      out[t].push_back(ids.emplace(label, ids.size()).first->second);
+    }
+  }
+  return out;
 }
 
 } // namespace symmesh::core
