@@ -2,6 +2,8 @@
 // structures whose answers are worked out in the comments (spec/boundary-patches.md).
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/symmetric_boundary_patches.h"
@@ -177,4 +179,75 @@ TEST(SymmetricBoundaryPatches, FixturesAgreeWithAlgorithm41) {
       special_counts(rotational_boundary_patches(multi, Point<Exact, 2>{{Exact(1), Exact(0)}}), 2),
       general_counts(boundary_patch_partition(multi), 2));
   EXPECT_EQ(general_counts(boundary_patch_partition(multi), 2), (std::vector<std::size_t>{4, 5}));
+}
+
+// The data/ fixtures with the answers stated in their descriptions.
+namespace {
+template <int D>
+TemplatedStructure<Exact, D> fixture(const std::string& f) {
+  return std::get<TemplatedStructure<Exact, D>>(
+      symmesh::io::read_templated_structure(SYMMESH_SOURCE_DIR "/data/" + f));
+}
+template <int D>
+std::vector<std::size_t> facet_counts(const BoundaryPatchPartition<Exact, D>& b) {
+  std::vector<std::size_t> c;
+  for (std::size_t t = 0; t < b.subdivisions.size(); ++t) c.push_back(b.patch_count(t, D - 1));
+  return c;
+}
+} // namespace
+
+TEST(BoundaryPatchPartition, Figure410SixAndFivePatches) {
+  const auto b = boundary_patch_partition(fixture<2>("fig_4_10_partition.json"));
+  ASSERT_TRUE(b.is_valid());
+  EXPECT_EQ(facet_counts(b), (std::vector<std::size_t>{6, 5}));
+  // green, yellow, purple pairs; 3 + 2 black singletons; one junction point of X2.
+  std::size_t pairs = 0, singles = 0;
+  for (const auto& c : b.classes) {
+    if (b.patches[c.front()].dimension != 1) continue;
+    (c.size() == 2 ? pairs : singles) += 1;
+  }
+  EXPECT_EQ(pairs, 3u);
+  EXPECT_EQ(singles, 5u);
+  EXPECT_EQ(b.patch_count(1, 0), 1u);
+  EXPECT_TRUE(b.regular());
+}
+
+TEST(BoundaryPatchPartition, Figure47IndirectNeighboursAreRelated) {
+  const auto x = fixture<2>("fig_4_7_indirect_neighbours.json");
+  const auto b = boundary_patch_partition(x);
+  EXPECT_EQ(facet_counts(b), (std::vector<std::size_t>{2, 4, 2}));
+  // X1 and X3 share no instance-graph edge, yet one class holds a patch of each (and of X2).
+  bool found = false;
+  for (const auto& c : b.classes) {
+    std::set<std::size_t> templates;
+    for (std::size_t p : c) templates.insert(b.patches[p].template_index);
+    if (templates == std::set<std::size_t>{0, 1, 2}) found = true;
+  }
+  EXPECT_TRUE(found);
+  for (const auto& m : b.mappings)
+    EXPECT_FALSE((m.from_template() == 0 && m.to_template() == 2) ||
+                 (m.from_template() == 2 && m.to_template() == 0));
+  EXPECT_TRUE(b.regular());
+}
+
+TEST(BoundaryPatchPartition, Figure411FixtureIsIrregular) {
+  const auto b = boundary_patch_partition(fixture<2>("fig_4_11_irregular.json"));
+  EXPECT_EQ(facet_counts(b), std::vector<std::size_t>{2});
+  EXPECT_FALSE(b.regular());
+}
+
+TEST(BoundaryPatchPartition, ThreeDimensionalFixtures) {
+  const auto cube = boundary_patch_partition(fixture<3>("cube_mirrored_halves_3d.json"));
+  EXPECT_EQ(facet_counts(cube), std::vector<std::size_t>{2});
+  EXPECT_TRUE(cube.regular());
+  const auto slice = boundary_patch_partition(fixture<3>("rotational_slice_3d.json"));
+  EXPECT_EQ(facet_counts(slice), std::vector<std::size_t>{3});
+  EXPECT_EQ(slice.patch_count(0, 1), 1u);
+  EXPECT_TRUE(slice.regular());
+}
+
+TEST(BoundaryPatchPartition, Figure68PatchesNotVisibleFromOneSlice) {
+  const auto b = boundary_patch_partition(fixture<2>("fig_6_8_multiregion_rotational.json"));
+  EXPECT_EQ(facet_counts(b), (std::vector<std::size_t>{4, 5}));
+  EXPECT_TRUE(b.regular());
 }
