@@ -708,9 +708,14 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
     }
   }
 
-  // Moore's partition refinement: classes of equal languages (= equal Algorithm 4.1 signatures).
+  // Partition refinement to classes of equal languages (= equal Algorithm 4.1 signatures):
+  // Moore's algorithm, but each round re-examines only states whose successors changed block, so
+  // a long chain of faces (one split per round) costs O(n) rather than O(n^2).
   std::vector<std::size_t> block(ns);
   {
+    std::vector<std::vector<std::size_t>> pred(ns);
+    for (std::size_t s = 0; s < ns; ++s)
+      for (const auto& [m, g] : delta[s]) pred[g].push_back(s);
     std::map<std::vector<std::size_t>, std::size_t> ids;
     for (std::size_t t = 0; t < nt; ++t)
       for (std::size_t s = offset[t]; s < offset[t + 1]; ++s) {
@@ -718,19 +723,73 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
         for (const auto& [m, g] : delta[s]) key.push_back(m);
         block[s] = ids.emplace(key, ids.size()).first->second;
       }
-    std::size_t count = ids.size();
-    for (;;) {
-      std::map<std::vector<std::size_t>, std::size_t> next;
-      std::vector<std::size_t> nb(ns);
-      for (std::size_t s = 0; s < ns; ++s) {
-        std::vector<std::size_t> key{block[s]};
-        for (const auto& [m, g] : delta[s]) key.push_back(block[g]);
-        nb[s] = next.emplace(key, next.size()).first->second;
-      }
-      block.swap(nb);
-      if (next.size() == count) break;
-      count = next.size();
+    // Rounds use the block ids of the round's start (moves are applied at its end). In a block,
+    // members not marked dirty share their successor blocks (nothing they point to moved since
+    // the block was last checked), so the dirty members with another key split off; if all are
+    // dirty, the largest group keeps the id. A block with one key is never renamed, so every
+    // round splits a block or ends the loop.
+    std::vector<std::vector<std::size_t>> members(ids.size());
+    std::vector<std::size_t> pos(ns);
+    for (std::size_t s = 0; s < ns; ++s) {
+      pos[s] = members[block[s]].size();
+      members[block[s]].push_back(s);
     }
+    auto key_of = [&](std::size_t s) {
+      std::vector<std::size_t> k;
+      for (const auto& [m, g] : delta[s]) k.push_back(block[g]);
+      return k;
+    };
+    std::vector<std::size_t> dirty(ns);
+    for (std::size_t s = 0; s < ns; ++s) dirty[s] = s;
+    std::vector<char> is_dirty(ns, 1);
+    while (!dirty.empty()) {
+      std::map<std::size_t, std::vector<std::size_t>> by_block;
+      for (std::size_t s : dirty) by_block[block[s]].push_back(s);
+      std::vector<std::pair<std::size_t, std::size_t>> moves;
+      for (auto& [b, ds] : by_block) {
+        std::optional<std::vector<std::size_t>> stay;
+        if (ds.size() < members[b].size())
+          for (std::size_t m : members[b])
+            if (!is_dirty[m]) {
+              stay = key_of(m);
+              break;
+            }
+        std::map<std::vector<std::size_t>, std::vector<std::size_t>> groups;
+        for (std::size_t s : ds) groups[key_of(s)].push_back(s);
+        if (!stay) {
+          stay = groups.begin()->first;
+          for (const auto& [k, g] : groups)
+            if (g.size() > groups[*stay].size()) stay = k;
+        }
+        for (const auto& [k, g] : groups) {
+          if (k == *stay) continue;
+          const std::size_t nb = members.size();
+          members.emplace_back();
+          for (std::size_t s : g) moves.emplace_back(s, nb);
+        }
+      }
+      for (std::size_t s : dirty) is_dirty[s] = 0;
+      dirty.clear();
+      for (const auto& [s, nb] : moves) {
+        auto& from = members[block[s]];
+        pos[from.back()] = pos[s];
+        from[pos[s]] = from.back();
+        from.pop_back();
+        pos[s] = members[nb].size();
+        members[nb].push_back(s);
+        block[s] = nb;
+      }
+      for (const auto& [s, nb] : moves)
+        for (std::size_t q : pred[s])
+          if (!is_dirty[q]) {
+            is_dirty[q] = 1;
+            dirty.push_back(q);
+          }
+    }
+    // Dense, deterministic class numbers (first occurrence order).
+    std::map<std::size_t, std::size_t> dense;
+    for (std::size_t s = 0; s < ns; ++s)
+      block[s] = dense.emplace(block[s], dense.size()).first->second;
   }
 
   // Patches: connected unions of faces of one class (incidence through closures).
@@ -796,9 +855,10 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
     }
   }
 
-  // BFS per class with composition potentials; an inconsistent arrow witnesses irregularity.
+  // BFS per class with composition potentials (maps only; the words are read off the BFS tree
+  // when needed); an inconsistent arrow witnesses irregularity.
   r.tree_parent.assign(np, std::nullopt);
-  std::vector<std::optional<Composition<FT, D>>> pot(np);
+  std::vector<std::optional<RigidTransformation<FT, D>>> pot(np);
   for (const auto& cls : r.classes) {
     const std::size_t root = cls.front();
     const auto& rs = r.subdivisions[r.patches[root].template_index];
@@ -813,26 +873,26 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
         if (a(p) != b(p)) return false;
       return true;
     };
-    pot[root] = Composition<FT, D>{};
+    pot[root] = RigidTransformation<FT, D>();
     std::deque<std::size_t> queue{root};
     while (!queue.empty()) {
       const std::size_t p = queue.front();
       queue.pop_front();
       for (std::size_t ai : out_arrows[p]) {
         const auto& a = r.arrows[ai];
-        Composition<FT, D> c = *pot[p];
-        c.letters.push_back(a.letter);
-        c.map = r.mappings[a.letter].map * c.map;
+        const auto c = r.mappings[a.letter].map * *pot[p];
         if (!pot[a.to]) {
           pot[a.to] = c;
           r.tree_parent[a.to] = a;
           queue.push_back(a.to);
-        } else if (!r.irregularity && !agree(pot[a.to]->map, c.map)) {
+        } else if (!r.irregularity && !agree(*pot[a.to], c)) {
           IrregularityWitness<FT, D> w;
           w.patch = root;
           w.target = a.to;
-          w.f1 = *pot[a.to];
-          w.f2 = c;
+          w.f1 = r.composition_between(root, a.to);
+          auto f2 = r.composition_between(root, p).letters;
+          f2.push_back(a.letter);
+          w.f2 = compose<FT, D>(r.mappings, f2);
           w.symmetry = w.f1.map.inverse() * w.f2.map;
           r.irregularity = w;
         }

@@ -31,7 +31,7 @@ struct BppOptions {
   /// Upper bound on subdivision vertices created by composing mappings (each one is the image
   /// of a domain vertex under a distinct composition); exceeding it throws
   /// CompositionLimitExceeded instead of running on.
-  std::size_t max_compositions = 200000;
+  std::size_t max_compositions = 20000;
 };
 
 /// A face of some template: (template, face index in that template's subdivision).
