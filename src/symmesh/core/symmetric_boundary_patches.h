@@ -185,6 +185,21 @@ std::vector<SymmetryPatch<FT>> patches_of_template(
     }
   }
   std::set<Point<FT, 2>, PointLess<FT, 2>> cut_set(forbid.begin(), forbid.end());
+  // A shared end joins two pieces only if the point itself has their label (the symmetry line it
+  // lies on and the other templates touching it): a pinch vertex of the template inside an
+  // interface belongs to the interface and separates the pieces around it.
+  auto point_label = [&](const Point<FT, 2>& q) {
+    std::pair<int, std::vector<std::size_t>> lab{-1, {}};
+    for (std::size_t l = 0; l < lines.size(); ++l)
+      if (lines[l].contains(q)) lab.first = int(l);
+    for (std::size_t j = 0; j < same_slice_others.size(); ++j)
+      for (const auto& f : same_slice_others[j])
+        if (on_closed_segment(f, q)) {
+          lab.second.push_back(j);
+          break;
+        }
+    return lab;
+  };
   std::vector<std::size_t> comp(pieces.size());
   for (std::size_t k = 0; k < pieces.size(); ++k) comp[k] = k;
   auto find = [&](std::size_t k) {
@@ -196,7 +211,9 @@ std::vector<SymmetryPatch<FT>> patches_of_template(
       if (pieces[a].line != pieces[b].line || pieces[a].label != pieces[b].label) continue;
       for (const auto& p : pieces[a].s)
         for (const auto& q : pieces[b].s)
-          if (p == q && !cut_set.count(p)) comp[find(a)] = find(b);
+          if (p == q && !cut_set.count(p) &&
+              point_label(p) == std::pair{pieces[a].line, pieces[a].label})
+            comp[find(a)] = find(b);
     }
   std::map<std::size_t, std::size_t> index;
   std::vector<SymmetryPatch<FT>> out;
