@@ -277,3 +277,88 @@ auto picture(const Complex<D>& m) {
 }
 
 } // namespace symmesh::proofs::gen
+
+// ---------------------------------------------------------------------------------------------
+// Appendix A: linear sets, intersection partition, refinement (Lemmas A.3, A.4)
+// ---------------------------------------------------------------------------------------------
+
+#include "symmesh/core/intersection_partition.h"
+
+namespace symmesh::proofs::gen {
+
+template <int D>
+using LinearCell = core::ConvexCell<Exact, D>;
+template <int D>
+using Linear = core::LinearSet<Exact, D>;
+template <int D>
+using LinearFamily = std::vector<Linear<D>>;
+
+/// Two linear sets A, B (Lemma A.3).
+template <int D>
+struct LinearPair {
+  Linear<D> a, b;
+};
+
+/// Lemma A.3: two geometries (linear manifolds) with conforming representations (every two cells
+/// meet in a common face): points, segments, convex polygons, fans and chord splits of convex
+/// polygons, boundary chains, polyominoes of up to three squares, and in 3D folded rectangles;
+/// in 3D on a few shared planes (coplanar pairs are common). B is independent, a translate of A,
+/// built on an edge or a vertex of A, A itself, or (3D) on a plane through a vertex of A. Grid
+/// coordinates make shared vertices, collinear overlaps and touching the rule.
+template <int D>
+rc::Gen<Described<LinearPair<D>>> linear_manifold_pair();
+
+/// Lemma A.3 counterexample (Figure A.7): B a rectangle (one cell or two triangles), A a
+/// C-shaped conforming polygon touching B along part of an edge and, elsewhere, in one point, so
+/// A ∩ B = segment ∪ isolated point; moved by a random rigid motion (3D: on a random plane).
+template <int D>
+rc::Gen<Described<LinearPair<D>>> figure_a7_pair();
+
+/// Lemma A.3 with a non-conforming representation of A: a triangle over [0, L] and, below it, a
+/// triangle split at a T-junction t ∈ (0, L); B a segment (3D: or a triangle off A's plane) on
+/// the line through [0, L] around t. A ∩ B is a segment, but ip(A, B) holds overlapping pieces.
+template <int D>
+rc::Gen<Described<LinearPair<D>>> nonconforming_representation_pair();
+
+/// Lemma A.4: a geometry X, its conforming triangulation (for checks independent of
+/// intersection_partition.h) and two coverings S, P of X.
+template <int D>
+struct PartitionCase {
+  Linear<D> x;
+  Complex<D> x_mesh;
+  LinearFamily<D> s, p;
+};
+
+/// S and P manifold partitions of X: X a convex polygon (one cell or a fan) cut by random lines
+/// (often through vertices), a polyomino cut by axis-parallel lines, or (3D) a folded pair of
+/// rectangles cut across the fold; cuts split one element or all; sometimes lower-dimensional
+/// elements (X on a cut line, an edge, a vertex) are added.
+template <int D>
+rc::Gen<Described<PartitionCase<D>>> manifold_partitions();
+
+/// Lemma A.4 dropped: P a manifold partition, S only a covering: X ∩ {h >= -c} and X ∩ {h <= c}
+/// for a line h = 0 through the centroid of a 2-cell of X ∩ (a 2-cell of P) and c half the
+/// largest |h| over that cell's vertices, so the two overlap inside the refinement.
+template <int D>
+rc::Gen<Described<PartitionCase<D>>> covering_and_partition();
+
+/// "[v0 v1 ...]" and "{cell, cell, ...}".
+template <int D>
+std::string cell_text(const LinearCell<D>& c);
+template <int D>
+std::string linear_text(const Linear<D>& a);
+
+/// The cells' fan triangulations with all faces over one point array (equal points merged): a
+/// conforming mesh of A when A's representation is conforming.
+template <int D>
+Complex<D> linear_set_complex(const Linear<D>& a);
+
+/// Failure records of linear sets: {"lemma", "recipe", "complexes": {name: complex}} and the
+/// union drawn as SVG (2D) or "" (3D).
+template <int D>
+std::string linear_sets_record(const std::string& lemma, const std::string& recipe,
+                               const std::vector<std::pair<std::string, Linear<D>>>& parts);
+template <int D>
+std::string linear_sets_picture(const std::vector<Linear<D>>& parts);
+
+} // namespace symmesh::proofs::gen

@@ -25,7 +25,7 @@ namespace symmesh::core {
 
 template <class FT, int D>
 struct ConvexCell {
-  int dim = -1;                        ///< 0, 1 or 2 (2 only if D >= 2)
+  int dim = -1;                       ///< 0, 1 or 2
   std::vector<Point<FT, D>> vertices; ///< extreme points in canonical order (see above)
 
   /// Canonical form: `vertices` are exactly the extreme points of their convex hull, affinely
