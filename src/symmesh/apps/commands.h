@@ -12,6 +12,7 @@ enum Exit : int { ok = 0, negative = 1, bad_input = 2 };
 void add_check(CLI::App& app, int& exit_code);
 void add_graph(CLI::App& app, int& exit_code);
 void add_lemmas(CLI::App& app, int& exit_code);
+void add_bpp(CLI::App& app, int& exit_code);
 
 /// Prints "symmesh: error: <message>" as one line on stderr.
 void print_error(const std::string& message);

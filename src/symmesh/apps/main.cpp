@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   symmesh::apps::add_check(app, exit_code);
   symmesh::apps::add_graph(app, exit_code);
   symmesh::apps::add_lemmas(app, exit_code);
+  symmesh::apps::add_bpp(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

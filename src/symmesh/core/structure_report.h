@@ -2,8 +2,10 @@
 ///
 /// Classification along Definitions 4.3 and 4.4: well-formed input, templated structure (Eq. 4.2),
 /// templated mesh (AT conforming, decided directly) or templated geometry, the Lemma 4.2
-/// checker's verdict (which must agree with the direct decision), and the instance graph.
+/// checker's verdict (which must agree with the direct decision), the instance graph, and its
+/// regularity (Def 4.9) with the boundary patch counts of Algorithm 4.1.
 #pragma once
+#include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/instance_graph.h"
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/core/kernel.h"
@@ -21,6 +23,39 @@ struct GraphEdgeSummary {
   InterfaceEdge edge;
 };
 
+/// Boundary patches of one template (Algorithm 4.1): facet patches (dimension D-1) and the
+/// lower-dimensional ones (points, and segments in 3D).
+struct PatchCounts {
+  std::size_t facet_patches = 0, lower_dimensional_patches = 0;
+};
+
+/// An irregularity witness (Def 4.9) reduced to what a report prints. Compositions are lists of
+/// mapping names, first applied first (an empty list is the identity). The symmetry
+/// F1^{-1} ∘ F2 is kept as exact numbers of the default kernel: the report is kernel-specific.
+struct IrregularitySummary {
+  std::size_t patch = 0, target = 0; ///< indices into the partition's patch list
+  std::vector<std::string> f1, f2;
+  std::vector<std::vector<Exact>> symmetry_matrix;
+  std::vector<Exact> symmetry_translation;
+};
+
+template <class FT, int D>
+IrregularitySummary summarise_irregularity(const BoundaryPatchPartition<FT, D>& bpp) {
+  const auto& w = *bpp.irregularity;
+  IrregularitySummary s;
+  s.patch = w.patch;
+  s.target = w.target;
+  for (std::size_t l : w.f1.letters) s.f1.push_back(bpp.mappings[l].name());
+  for (std::size_t l : w.f2.letters) s.f2.push_back(bpp.mappings[l].name());
+  for (int i = 0; i < D; ++i) {
+    s.symmetry_matrix.emplace_back();
+    for (int j = 0; j < D; ++j)
+      s.symmetry_matrix.back().push_back(Exact(w.symmetry.matrix()[i][j]));
+    s.symmetry_translation.push_back(Exact(w.symmetry.translation_part()[i]));
+  }
+  return s;
+}
+
 struct StructureReport {
   int dimension = 0;
   std::size_t templates = 0, instances = 0;
@@ -37,7 +72,41 @@ struct StructureReport {
   std::vector<std::string> template_names;
   std::vector<GraphEdgeSummary> graph_edges;
   std::size_t structure_instance_vertices = 0, structure_instance_cells = 0;
+  /// Boundary patch partition (set for templated structures): computed unless 𝔗_X exceeded the
+  /// default guard, which is reported in bpp_error rather than failing the whole check.
+  bool bpp_computed = false;
+  std::string bpp_error;
+  bool regular = false; ///< Def 4.9, when bpp_computed
+  std::optional<IrregularitySummary> irregularity;
+  std::vector<PatchCounts> patches_per_template;
 };
+
+/// The composition guard of `check`, below BppOptions' default: the partition refinement is
+/// quadratic in the length of a chain of composed images (a glide by 1/10000 already takes
+/// about 40 s), and check must stay quick on any input. The 32-template, 200-instance
+/// performance fixture needs about 4000; `symmesh bpp --max-compositions` goes further.
+inline constexpr std::size_t kCheckMaxCompositions = 10000;
+
+/// Fills the regularity verdict and the patch counts of `r` from Algorithm 4.1.
+template <class FT, int D>
+void summarise_boundary_patches(const TemplatedStructure<FT, D>& x, StructureReport& r) {
+  BppOptions options;
+  options.max_compositions = kCheckMaxCompositions;
+  try {
+    const auto bpp = boundary_patch_partition(x, options);
+    r.bpp_computed = true;
+    r.regular = bpp.regular();
+    if (!r.regular) r.irregularity = summarise_irregularity(bpp);
+    for (std::size_t t = 0; t < x.templates.size(); ++t) {
+      PatchCounts c;
+      for (std::size_t p : bpp.bndpart(t))
+        (bpp.patches[p].dimension == D - 1 ? c.facet_patches : c.lower_dimensional_patches)++;
+      r.patches_per_template.push_back(c);
+    }
+  } catch (const CompositionLimitExceeded& e) {
+    r.bpp_error = e.what();
+  }
+}
 
 template <class FT, int D>
 StructureReport analyse(const TemplatedStructure<FT, D>& x) {
@@ -66,6 +135,7 @@ StructureReport analyse(const TemplatedStructure<FT, D>& x) {
   const auto g = instance_graph(x, si);
   for (auto [e, end] = boost::edges(g); e != end; ++e)
     r.graph_edges.push_back({boost::source(*e, g), boost::target(*e, g), g[*e]});
+  summarise_boundary_patches(x, r);
   if (r.mesh_templates) {
     r.at_conforming = structure_instance_conforming(si);
     r.lemma42 = check_interface_conformity(x, si);

@@ -1,6 +1,9 @@
 // Serialisation of the check report.
 #include "symmesh/io/report_json.h"
 
+#include "symmesh/io/bpp_output.h"
+#include "symmesh/io/templated_structure_json.h"
+
 #include <nlohmann/json.hpp>
 
 #include <sstream>
@@ -12,6 +15,66 @@ const char* kKernel = "rational (CGAL Epeck, exact)";
 
 std::string condition_name(int c) {
   return c == 1 ? "(i)" : c == 2 ? "(ii)" : "";
+}
+
+/// "regular", "irregularity", "patches_per_template" (and "bpp_error" when the guard stopped
+/// Algorithm 4.1): null / empty when the partition was not computed.
+void add_boundary_patches(nlohmann::ordered_json& j, const core::StructureReport& r) {
+  j["regular"] = r.bpp_computed ? nlohmann::ordered_json(r.regular) : nlohmann::ordered_json();
+  j["irregularity"] =
+      r.irregularity ? irregularity_json(*r.irregularity) : nlohmann::ordered_json(nullptr);
+  j["patches_per_template"] = nlohmann::ordered_json::array();
+  for (std::size_t t = 0; t < r.patches_per_template.size(); ++t)
+    j["patches_per_template"].push_back(
+        {{"template", t + 1},
+         {"name", r.template_names.at(t)},
+         {"facet_patches", r.patches_per_template[t].facet_patches},
+         {"lower_dimensional_patches", r.patches_per_template[t].lower_dimensional_patches}});
+  if (!r.bpp_error.empty()) j["bpp_error"] = r.bpp_error;
+}
+
+/// A composition in the dissertation's notation, last applied leftmost; I when empty.
+std::string composition_text(const std::vector<std::string>& letters) {
+  if (letters.empty()) return "I";
+  std::string out;
+  for (auto it = letters.rbegin(); it != letters.rend(); ++it)
+    out += (out.empty() ? "" : " ∘ ") + *it;
+  return out;
+}
+
+/// x -> [[a, b], [c, d]] x + [e, f] with exact entries.
+std::string symmetry_text(const core::IrregularitySummary& w) {
+  std::string m = "[";
+  for (std::size_t i = 0; i < w.symmetry_matrix.size(); ++i) {
+    m += i ? ", [" : "[";
+    for (std::size_t k = 0; k < w.symmetry_matrix[i].size(); ++k)
+      m += (k ? ", " : "") + exact_to_string(w.symmetry_matrix[i][k]);
+    m += "]";
+  }
+  m += "] x + [";
+  for (std::size_t i = 0; i < w.symmetry_translation.size(); ++i)
+    m += (i ? ", " : "") + exact_to_string(w.symmetry_translation[i]);
+  return "x -> " + m + "]";
+}
+
+void boundary_patches_text(std::ostringstream& os, const core::StructureReport& r) {
+  os << "  instance graph regularity (Def 4.9): ";
+  if (!r.bpp_computed) {
+    os << "not decided: " << r.bpp_error << " (check stops at " << core::kCheckMaxCompositions
+       << "; use symmesh bpp --max-compositions N)\n";
+    return;
+  }
+  os << (r.regular ? "regular" : "IRREGULAR") << "\n";
+  if (const auto& w = r.irregularity) {
+    os << "    F1 = " << composition_text(w->f1) << " and F2 = " << composition_text(w->f2)
+       << " both map boundary patch P" << w->patch << " onto P" << w->target
+       << " but differ on it\n";
+    os << "    forced symmetry F1^-1 ∘ F2 of P" << w->patch << ": " << symmetry_text(*w) << "\n";
+  }
+  for (std::size_t t = 0; t < r.patches_per_template.size(); ++t)
+    os << "  boundary patches of " << r.template_names.at(t) << " (template " << t + 1
+       << ", Algorithm 4.1): " << r.patches_per_template[t].facet_patches << " facet, "
+       << r.patches_per_template[t].lower_dimensional_patches << " lower-dimensional\n";
 }
 } // namespace
 
@@ -64,6 +127,7 @@ std::string report_to_json(const core::StructureReport& r) {
   j["instance_graph"] = g;
   j["structure_instance"] = {{"vertices", r.structure_instance_vertices},
                              {"cells", r.structure_instance_cells}};
+  add_boundary_patches(j, r);
   return j.dump(2) + "\n";
 }
 
@@ -102,6 +166,7 @@ std::string report_to_text(const core::StructureReport& r, const std::string& so
      << loops << " self-loop(s))\n";
   os << "  structure instance: " << r.structure_instance_vertices << " vertices, "
      << r.structure_instance_cells << " cells\n";
+  boundary_patches_text(os, r);
   return os.str();
 }
 

@@ -8,7 +8,9 @@ namespace symmesh::io {
 
 /// One JSON object: templated_structure, templated_mesh, templated_geometry, dimension,
 /// templates, instances, instance_graph_edges, lemma_4_2 {holds, failing_pair, condition, ...},
-/// kernel, instance_graph {nodes, edges}, structure_instance {vertices, cells}, error.
+/// kernel, instance_graph {nodes, edges}, structure_instance {vertices, cells}, error, and for
+/// templated structures regular, irregularity, patches_per_template (bpp_error when Algorithm 4.1
+/// hit its composition guard).
 std::string report_to_json(const core::StructureReport& r);
 
 /// The human-readable report printed by `symmesh check`.
