@@ -43,8 +43,7 @@ bool is_templated_structure(const core::TemplatedStructure<Exact, D>& x, const s
     return false;
   }
   if (const auto o = core::find_instance_overlap(x)) {
-    print_error(path + ": instances " + core::to_string(o->a) + " and " + core::to_string(o->b) +
-                " overlap: their interiors intersect (Eq. 4.2)");
+    print_error(path + ": " + core::overlap_message(*o));
     return false;
   }
   return true;

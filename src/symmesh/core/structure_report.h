@@ -125,8 +125,7 @@ StructureReport analyse(const TemplatedStructure<FT, D>& x) {
   r.overlap = find_instance_overlap(x);
   r.templated_structure = !r.overlap.has_value();
   if (!r.templated_structure) {
-    r.error = "instances " + to_string(r.overlap->a) + " and " + to_string(r.overlap->b) +
-              " overlap: their interiors intersect (Eq. 4.2)";
+    r.error = overlap_message(*r.overlap);
     return r;
   }
   const auto si = apply_template(x);

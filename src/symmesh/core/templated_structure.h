@@ -127,6 +127,12 @@ struct OverlapWitness {
   InstanceId a, b;
 };
 
+/// The one-line message for an Eq. 4.2 violation (shared by check, graph and bpp).
+inline std::string overlap_message(const OverlapWitness& o) {
+  return "instances " + to_string(o.a) + " and " + to_string(o.b) +
+         " overlap: their interiors intersect (Eq. 4.2)";
+}
+
 /// Eq. 4.2: int*(us(T_{i,g}(X_i))) ∩ int*(us(T_{j,h}(X_j))) = ∅ for distinct instances.
 /// For pure D-dimensional meshes this holds iff no two D-cells of different instances have
 /// meeting interiors (spec/definitions.md#eq-4-2-by-cells).
