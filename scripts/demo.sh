@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job on built-in examples: check the Fig. 4.3 templated mesh and the Fig. 4.4
-# non-conforming structure, render instance graphs, and spot-check the interface lemmas.
+# non-conforming structure, render instance graphs and boundary patch partitions (Figs 4.10,
+# 6.8, a 3D rotational slice), and spot-check the interface lemmas.
 set -uo pipefail
 bin=${1:-build/symmesh}
 out=${2:-out}
@@ -17,6 +18,10 @@ run "$bin" graph data/fig_4_3_templated_mesh.json -o "$out/fig_4_3_instance_grap
 run "$bin" graph data/fig_4_6_instance_graph.json -o "$out/fig_4_6_instance_graph.svg" || exit 1
 run "$bin" graph data/fig_4_6_instance_graph.json -o "$out/fig_4_6_instance_graph.dot" || exit 1
 run "$bin" check --json data/reflected_cube_3d.json > "$out/reflected_cube_3d_check.json" || exit 1
+run "$bin" bpp data/fig_4_10_partition.json -o "$out/fig_4_10_bpp.svg" || exit 1
+run "$bin" bpp data/fig_6_8_multiregion_rotational.json -o "$out/fig_6_8_bpp.svg" || exit 1
+run "$bin" bpp data/fig_6_8_multiregion_rotational.json -o "$out/fig_6_8_bpp.json" || exit 1
+run "$bin" bpp data/rotational_slice_3d.json -o "$out/rotational_slice_3d_bpp.vtu" || exit 1
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"
