@@ -11,6 +11,7 @@
 // part of a boundary element, and (ii) and (iii) fail.
 #include "proofs-checks/bpp_generators.h"
 #include "proofs-checks/registry.h"
+#include "symmesh/core/boundary_element_relation.h"
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/respect.h"
 
@@ -71,12 +72,19 @@ std::set<Tuple<D>> boundary_elements_in_interface(const Structure<D>& x, core::I
                                                   core::InstanceId other) {
   const auto bnd = core::mesh_boundary(x.templates[own.i].mesh);
   const auto other_instance = core::instance(x, other);
+  const auto other_box = core::box_of<Exact, D>(other_instance.points);
   std::set<Tuple<D>> out;
   for (const auto& e : bnd.elements) {
     auto c = bnd.coords(e);
     Tuple<D> world;
     for (const auto& p : c) world.push_back(x.tf(own)(p));
-    if (core::simplex_covered_by<Exact, D>(world, other_instance)) out.insert(sorted<D>(c));
+    if (!core::box_of<Exact, D>(world).overlaps(other_box)) continue;
+    // Cheap necessary condition first: every vertex lies in the other instance.
+    bool vertices_inside = true;
+    for (const auto& p : world)
+      if (!core::point_in_underlying_space(other_instance, p)) vertices_inside = false;
+    if (vertices_inside && core::simplex_covered_by<Exact, D>(world, other_instance))
+      out.insert(sorted<D>(c));
   }
   return out;
 }
@@ -125,11 +133,26 @@ bool boundaries_respect_patches(const Structure<D>& x, const Bpp<D>& b) {
     for (const auto& e : bnd.elements) {
       const auto c = bnd.coords(e);
       if (!core::box_of<Exact, D>(c).overlaps(box)) continue;
+      // Exact tests only against pieces whose boxes meet the face (the others cannot meet it).
+      auto near = [&](const Tuple<D>& f) {
+        const auto fb = core::box_of<Exact, D>(f);
+        std::vector<const Tuple<D>*> out;
+        for (const auto& q : pieces)
+          if (fb.overlaps(core::box_of<Exact, D>(q))) out.push_back(&q);
+        return out;
+      };
       const bool ok = core::respects_by_faces<Exact, D>(
-          c, [&](const auto& f) { return core::simplex_covered_by<Exact, D>(f, patch); },
+          c,
           [&](const auto& f) {
-            for (const auto& q : pieces)
-              if (core::relint_meets_convex<Exact, D>(f, {q})) return true;
+            for (const auto& v : f)
+              if (!core::point_in_underlying_space(patch, v)) return false;
+            return core::simplex_covered_by<Exact, D>(f, patch);
+          },
+          [&](const auto& f) {
+            for (const auto* q : near(f))
+              if (!core::strictly_separated<Exact, D>(f, *q) &&
+                  core::relint_meets_convex<Exact, D>(f, {*q}))
+                return true;
             return false;
           });
       if (!ok) return false;
@@ -142,6 +165,8 @@ template <int D>
 void mesh_conclusion(const GeneratedStructure<D>& s) {
   const auto b = core::boundary_patch_partition(s.x);
   SYMMESH_PROOF_ASSERT(mappings_map_boundary_elements<D>(s.x, b), record(s), picture(s));
+  SYMMESH_PROOF_ASSERT(core::boundary_element_relation(s.x, b.mappings).maps_onto_elements,
+                       record(s), picture(s));
   SYMMESH_PROOF_ASSERT(boundaries_respect_patches<D>(s.x, b), record(s), picture(s));
 }
 

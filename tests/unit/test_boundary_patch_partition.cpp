@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "symmesh/core/boundary_element_relation.h"
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/symmetric_boundary_patches.h"
@@ -250,4 +251,18 @@ TEST(BoundaryPatchPartition, Figure68PatchesNotVisibleFromOneSlice) {
   const auto b = boundary_patch_partition(fixture<2>("fig_6_8_multiregion_rotational.json"));
   EXPECT_EQ(facet_counts(b), (std::vector<std::size_t>{4, 5}));
   EXPECT_TRUE(b.regular());
+}
+
+// Def 4.8 on template boundary elements of a templated mesh (Lemma 4.4 (ii)): Fig. 4.3 maps
+// elements onto elements; Fig. 4.4 (not a templated mesh) does not, and names the element.
+TEST(BoundaryElementRelation, TemplatedMeshVersusNonConforming) {
+  const auto good = fixture<2>("fig_4_3_templated_mesh.json");
+  const auto r = boundary_element_relation(good, template_boundary_mappings(good));
+  EXPECT_TRUE(r.maps_onto_elements) << r.offender;
+  EXPECT_EQ(r.elements.size(), 2u);
+  EXPECT_LT(r.class_count, r.elements[0].size() + r.elements[1].size());
+  const auto bad = fixture<2>("fig_4_4_nonconforming.json");
+  const auto s = boundary_element_relation(bad, template_boundary_mappings(bad));
+  EXPECT_FALSE(s.maps_onto_elements);
+  EXPECT_NE(s.offender.find("is not mapped onto an element"), std::string::npos);
 }
