@@ -2,6 +2,8 @@
 // JSON; the SVG and VTU round them to double for display only — nothing is decided from them.
 #include "symmesh/io/bpp_output.h"
 
+#include "symmesh/io/plot_box.h"
+
 #include "symmesh/io/templated_structure_json.h"
 
 #include <algorithm>
@@ -151,17 +153,9 @@ std::vector<std::string> class_colours(const Bpp2& bpp) {
   return out;
 }
 
-struct Box {
-  double minx = std::numeric_limits<double>::max(), miny = minx;
-  double maxx = std::numeric_limits<double>::lowest(), maxy = maxx;
-  void add(const P& p) {
-    minx = std::min(minx, p[0]);
-    miny = std::min(miny, p[1]);
-    maxx = std::max(maxx, p[0]);
-    maxy = std::max(maxy, p[1]);
-  }
-  double width() const { return maxx - minx; }
-  double height() const { return maxy - miny; }
+struct Box : detail::PlotBox {
+  double width() const { return span_x(); }
+  double height() const { return span_y(); }
 };
 
 /// Grid of equal panels, one per template, all drawn at the same scale.

@@ -2,6 +2,8 @@
 // double here only for drawing; nothing is decided from them.
 #include "symmesh/io/svg.h"
 
+#include "symmesh/io/plot_box.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -13,15 +15,7 @@ namespace {
 
 using P = std::array<double, 2>;
 
-struct Frame {
-  double minx = std::numeric_limits<double>::max(), miny = minx;
-  double maxx = std::numeric_limits<double>::lowest(), maxy = maxx;
-  void add(const P& p) {
-    minx = std::min(minx, p[0]);
-    miny = std::min(miny, p[1]);
-    maxx = std::max(maxx, p[0]);
-    maxy = std::max(maxy, p[1]);
-  }
+struct Frame : detail::PlotBox {
   double scale() const {
     const double w = std::max(maxx - minx, 1e-12), h = std::max(maxy - miny, 1e-12);
     return 560.0 / std::max(w, h);
