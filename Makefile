@@ -1,11 +1,13 @@
 # symmesh — the two commands of the README contract.
 #   make demo : install deps, build Release, run the main job on a built-in example into out/
 #   make test : install deps, build, run every test (unit, proofs-checks, CLI end-to-end)
+#   make bench: build the benchmarks (Release, build-bench/), run them, write docs/benchmarks/
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+BENCH_BUILD ?= build-bench
 
-.PHONY: all deps configure build demo test clean format fuzz
+.PHONY: all deps configure build demo test bench clean format fuzz
 
 all: build
 
@@ -23,6 +25,11 @@ demo: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 1500
+
+bench: deps
+	cmake -S . -B $(BENCH_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DSYMMESH_BUILD_TESTS=OFF -DSYMMESH_BUILD_BENCH=ON $(CMAKE_FLAGS)
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition
+	bash bench/run_rotation_composition.sh $(BENCH_BUILD)/bench/bench_rotation_composition docs/benchmarks
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

@@ -10,7 +10,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev librapidcheck-dev
   libgraphviz-dev graphviz
   libcli11-dev nlohmann-json3-dev
-  python3-meshio
+  python3-meshio python3-matplotlib
 )
 
 # Optional groups: --fuzz adds clang-14 and its libFuzzer/sanitizer runtime (fuzz/run.sh).
