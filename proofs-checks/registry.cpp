@@ -23,6 +23,8 @@ void register_lemma_4_4(std::vector<Property>&);
 void register_lemma_4_5(std::vector<Property>&);
 void register_lemma_6_1(std::vector<Property>&);
 void register_lemma_6_2(std::vector<Property>&);
+void register_lemma_A_1(std::vector<Property>&);
+void register_lemma_A_2(std::vector<Property>&);
 void register_lemma_A_3(std::vector<Property>&);
 void register_lemma_A_4(std::vector<Property>&);
 void register_at_multi_region_equivalence(std::vector<Property>&);
@@ -36,8 +38,8 @@ const std::vector<Property>& all_properties() {
          {register_lemma_2_1, register_lemma_2_2, register_lemma_2_3, register_lemma_2_4,
           register_lemma_2_5, register_lemma_4_1, register_lemma_4_2, register_lemma_4_3,
           register_lemma_4_4, register_lemma_4_5, register_lemma_6_1, register_lemma_6_2,
-          register_lemma_A_3, register_lemma_A_4, register_at_multi_region_equivalence,
-          register_bpp_invariance, register_algorithm_6_2})
+          register_lemma_A_1, register_lemma_A_2, register_lemma_A_3, register_lemma_A_4,
+          register_at_multi_region_equivalence, register_bpp_invariance, register_algorithm_6_2})
       f(p);
     return p;
   }();
