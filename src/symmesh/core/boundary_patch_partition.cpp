@@ -52,20 +52,6 @@ Point<FT, 3> cross3(const Point<FT, 3>& a, const Point<FT, 3>& b) {
   return r;
 }
 
-/// x on the closed segment [p, q] (p != q).
-template <class FT, int D>
-bool on_segment(const Point<FT, D>& p, const Point<FT, D>& q, const Point<FT, D>& x) {
-  const auto d = q - p, e = x - p;
-  if constexpr (D == 2) {
-    if (cross2<FT>(d, e) != 0) return false;
-  } else {
-    const auto c = cross3<FT>(d, e);
-    if (c[0] != 0 || c[1] != 0 || c[2] != 0) return false;
-  }
-  const FT t = dot<FT, D>(e, d);
-  return t >= 0 && t <= dot<FT, D>(d, d);
-}
-
 template <class FT, int D>
 Point<FT, D> midpoint(const Point<FT, D>& a, const Point<FT, D>& b) {
   return scaled<FT, D>(a + b, FT(1) / FT(2));
@@ -76,14 +62,6 @@ Point<FT, D> centroid(const PointVec<FT, D>& p) {
   Point<FT, D> s = zero_point<FT, D>();
   for (const auto& q : p) s = s + q;
   return scaled<FT, D>(s, FT(1) / FT(int(p.size())));
-}
-
-template <class FT, int D>
-bool point_in_piece(const DomainPiece<FT, D>& piece, const Point<FT, D>& x) {
-  const auto& v = piece.vertices;
-  if (v.size() == 1) return v[0] == x;
-  if (v.size() == 2) return on_segment<FT, D>(v[0], v[1], x);
-  return piece_contains<FT, D>(piece, x);
 }
 
 template <class FT, int D>
@@ -307,7 +285,7 @@ bool applies(const TemplateBoundaryMapping<FT, D>& m, const Box<FT, D>& box,
   if (m.whole_boundary) return true;
   if (!box_contains<FT, D>(box, x)) return false;
   for (const auto& p : m.domain)
-    if (point_in_piece<FT, D>(p, x)) return true;
+    if (piece_contains<FT, D>(p, x)) return true;
   return false;
 }
 
@@ -359,7 +337,7 @@ close_subdivisions_2d(const TemplatedStructure<FT, 2>& x,
     if (!breaks[t].insert(p).second) return;
     bool on = false;
     for (const auto& e : edges[t])
-      if (on_segment<FT, 2>(e[0], e[1], p)) on = true;
+      if (point_on_segment<FT, 2>(e[0], e[1], p)) on = true;
     if (!on) throw std::logic_error("boundary subdivision: a mapped point left the boundary");
     if (composed && ++created > o.max_compositions) {
       std::ostringstream m;
@@ -394,7 +372,7 @@ close_subdivisions_2d(const TemplatedStructure<FT, 2>& x,
       const auto d = e[1] - e[0];
       std::vector<std::pair<FT, VertexId>> on;
       for (std::size_t v = 0; v < s.points.size(); ++v)
-        if (on_segment<FT, 2>(e[0], e[1], s.points[v]))
+        if (point_on_segment<FT, 2>(e[0], e[1], s.points[v]))
           on.emplace_back(dot<FT, 2>(s.points[v] - e[0], d), VertexId(v));
       std::sort(on.begin(), on.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -968,7 +946,8 @@ std::optional<std::size_t> BoundaryPatchPartition<FT, D>::locate(std::size_t t,
       for (const auto& piece : s.faces[f].pieces) {
         PointVec<FT, D> c;
         for (VertexId v : piece) c.push_back(s.points[v]);
-        if (dim == 1 ? on_segment<FT, D>(c[0], c[1], x) : point_in_simplex<FT, D>(c, x)) return f;
+        if (dim == 1 ? point_on_segment<FT, D>(c[0], c[1], x) : point_in_simplex<FT, D>(c, x))
+          return f;
       }
     }
   return std::nullopt;

@@ -94,6 +94,17 @@ std::optional<std::vector<FT>> barycentric(const std::vector<Point<FT, D>>& b,
   return solve_unique(a, rhs);
 }
 
+/// x on the closed segment [p, q], p != q, exactly (collinear, and between the ends).
+template <class FT, int D>
+bool point_on_segment(const Point<FT, D>& p, const Point<FT, D>& q, const Point<FT, D>& x) {
+  const auto d = q - p, e = x - p;
+  for (int i = 0; i < D; ++i)
+    for (int j = i + 1; j < D; ++j)
+      if (d[i] * e[j] - d[j] * e[i] != 0) return false;
+  const FT t = dot<FT, D>(e, d);
+  return t >= 0 && t <= dot<FT, D>(d, d);
+}
+
 /// x ∈ conv(b) for an affinely independent b.
 template <class FT, int D>
 bool point_in_simplex(const std::vector<Point<FT, D>>& b, const Point<FT, D>& x) {

@@ -50,10 +50,7 @@ using Seg = std::array<Point<FT, 2>, 2>;
 
 template <class FT>
 bool on_closed_segment(const Seg<FT>& s, const Point<FT, 2>& p) {
-  const auto d = s[1] - s[0], e = p - s[0];
-  if (d[0] * e[1] - d[1] * e[0] != 0) return false;
-  const FT t = dot<FT, 2>(e, d);
-  return t >= 0 && t <= dot<FT, 2>(d, d);
+  return point_on_segment<FT, 2>(s[0], s[1], p);
 }
 
 /// Boundary edges of a template's carrier (template coordinates).

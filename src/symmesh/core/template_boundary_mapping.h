@@ -32,7 +32,9 @@ struct DomainPiece {
 template <class FT, int D>
 bool piece_contains(const DomainPiece<FT, D>& piece, const Point<FT, D>& x) {
   const auto& v = piece.vertices;
-  if (v.size() <= 3) return point_in_simplex<FT, D>(v, x);
+  if (v.size() == 1) return v[0] == x;
+  if (v.size() == 2) return point_on_segment<FT, D>(v[0], v[1], x);
+  if (v.size() == 3) return point_in_simplex<FT, D>(v, x);
   for (std::size_t k = 1; k + 1 < v.size(); ++k)
     if (point_in_simplex<FT, D>({v[0], v[k], v[k + 1]}, x)) return true;
   return false;
