@@ -30,16 +30,35 @@ void register_lemma_A_4(std::vector<Property>&);
 void register_at_multi_region_equivalence(std::vector<Property>&);
 void register_bpp_invariance(std::vector<Property>&);
 void register_algorithm_6_2(std::vector<Property>&);
+void register_cyclotomic_field(std::vector<Property>&);
+void register_lemma_4_1_cyclotomic(std::vector<Property>&);
+void register_lemma_4_2_cyclotomic(std::vector<Property>&);
 
 const std::vector<Property>& all_properties() {
   static const std::vector<Property> props = [] {
     std::vector<Property> p;
-    for (RegisterFn f :
-         {register_lemma_2_1, register_lemma_2_2, register_lemma_2_3, register_lemma_2_4,
-          register_lemma_2_5, register_lemma_4_1, register_lemma_4_2, register_lemma_4_3,
-          register_lemma_4_4, register_lemma_4_5, register_lemma_6_1, register_lemma_6_2,
-          register_lemma_A_1, register_lemma_A_2, register_lemma_A_3, register_lemma_A_4,
-          register_at_multi_region_equivalence, register_bpp_invariance, register_algorithm_6_2})
+    for (RegisterFn f : {register_lemma_2_1,
+                         register_lemma_2_2,
+                         register_lemma_2_3,
+                         register_lemma_2_4,
+                         register_lemma_2_5,
+                         register_lemma_4_1,
+                         register_lemma_4_2,
+                         register_lemma_4_3,
+                         register_lemma_4_4,
+                         register_lemma_4_5,
+                         register_lemma_6_1,
+                         register_lemma_6_2,
+                         register_lemma_A_1,
+                         register_lemma_A_2,
+                         register_lemma_A_3,
+                         register_lemma_A_4,
+                         register_at_multi_region_equivalence,
+                         register_bpp_invariance,
+                         register_algorithm_6_2,
+                         register_cyclotomic_field,
+                         register_lemma_4_1_cyclotomic,
+                         register_lemma_4_2_cyclotomic})
       f(p);
     return p;
   }();

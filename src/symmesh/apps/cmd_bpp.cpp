@@ -35,8 +35,8 @@ std::optional<Format> format_of(const std::string& path) {
 /// Reads a templated structure with the messages of load_well_formed (apps/load.h), but without
 /// its full analysis: Lemma 4.2, the structure instance and a partition at the default guard
 /// would all be computed and thrown away before the partition asked for here.
-template <int D>
-bool is_templated_structure(const core::TemplatedStructure<Exact, D>& x, const std::string& path) {
+template <class FT, int D>
+bool is_templated_structure(const core::TemplatedStructure<FT, D>& x, const std::string& path) {
   std::ostringstream why;
   if (!x.is_well_formed(&why)) {
     print_error(path + ": " + why.str());
@@ -49,16 +49,16 @@ bool is_templated_structure(const core::TemplatedStructure<Exact, D>& x, const s
   return true;
 }
 
-template <int D>
-std::size_t facet_patch_total(const core::BoundaryPatchPartition<Exact, D>& bpp) {
+template <class FT, int D>
+std::size_t facet_patch_total(const core::BoundaryPatchPartition<FT, D>& bpp) {
   std::size_t n = 0;
   for (const auto& p : bpp.patches) n += p.dimension == D - 1;
   return n;
 }
 
 /// "symmesh: bpp: 32 templates, 1234 mappings, 56 patches (40 facet), 12 classes, regular, 0.8 s"
-template <int D>
-void print_progress(const core::BoundaryPatchPartition<Exact, D>& bpp, double seconds) {
+template <class FT, int D>
+void print_progress(const core::BoundaryPatchPartition<FT, D>& bpp, double seconds) {
   char time[32];
   std::snprintf(time, sizeof time, "%.2f s", seconds);
   std::cerr << "symmesh: bpp: " << bpp.subdivisions.size() << " templates, " << bpp.mappings.size()
@@ -67,17 +67,17 @@ void print_progress(const core::BoundaryPatchPartition<Exact, D>& bpp, double se
             << (bpp.regular() ? "regular" : "IRREGULAR") << ", " << time << "\n";
 }
 
-template <int D>
-std::string render(const core::TemplatedStructure<Exact, D>& x,
-                   const core::BoundaryPatchPartition<Exact, D>& bpp, Format f) {
+template <class FT, int D>
+std::string render(const core::TemplatedStructure<FT, D>& x,
+                   const core::BoundaryPatchPartition<FT, D>& bpp, Format f) {
   if (f == Format::vtu) return io::bpp_vtu(bpp);
   if (f == Format::json) return io::bpp_json(x, bpp).dump(2) + "\n";
   if constexpr (D == 2) return io::bpp_svg(x, bpp);
   throw std::logic_error("bpp: SVG of a 3D partition"); // refused before computing
 }
 
-template <int D>
-int run_on(const core::TemplatedStructure<Exact, D>& x, const BppCliOptions& o,
+template <class FT, int D>
+int run_on(const core::TemplatedStructure<FT, D>& x, const BppCliOptions& o,
            std::optional<Format> f) {
   if (!is_templated_structure(x, o.file)) return bad_input;
   if (D == 3 && f == Format::svg) {
@@ -87,7 +87,7 @@ int run_on(const core::TemplatedStructure<Exact, D>& x, const BppCliOptions& o,
   core::BppOptions options;
   options.max_compositions = std::size_t(o.max_compositions);
   const auto start = std::chrono::steady_clock::now();
-  core::BoundaryPatchPartition<Exact, D> bpp;
+  core::BoundaryPatchPartition<FT, D> bpp;
   try {
     bpp = core::boundary_patch_partition(x, options);
   } catch (const core::CompositionLimitExceeded& e) {

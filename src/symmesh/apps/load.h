@@ -10,7 +10,10 @@ namespace symmesh::apps {
 
 inline core::StructureReport analyse_file(const std::string& path) {
   const auto x = io::read_templated_structure(path);
-  return std::visit([](const auto& s) { return core::analyse(s); }, x);
+  core::StructureReport r = std::visit([](const auto& s) { return core::analyse(s); }, x);
+  r.kernel = io::kernel_name(x);
+  r.field_m = io::field_order(x);
+  return r;
 }
 
 void print_error(const std::string& message);

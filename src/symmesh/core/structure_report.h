@@ -9,8 +9,11 @@
 #include "symmesh/core/instance_graph.h"
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/core/kernel.h"
+#include "symmesh/number/cyclotomic.h"
 
 #include <optional>
+#include <sstream>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -29,14 +32,27 @@ struct PatchCounts {
   std::size_t facet_patches = 0, lower_dimensional_patches = 0;
 };
 
+/// Exact text of a number: "n" or "n/d" in lowest terms for rationals, "K<m>[a_0, ...]" (the
+/// coefficients in the basis of spec/number-type.md) for elements of K_m. Reports hold text so
+/// that they do not depend on the kernel the structure was analysed in.
+template <class FT>
+std::string exact_text(const FT& x) {
+  std::ostringstream os;
+  if constexpr (std::is_same_v<FT, Exact>)
+    os << CGAL::exact(x);
+  else
+    os << x;
+  return os.str();
+}
+
 /// An irregularity witness (Def 4.9) reduced to what a report prints. Compositions are lists of
 /// mapping names, first applied first (an empty list is the identity). The symmetry
-/// F1^{-1} ∘ F2 is kept as exact numbers of the default kernel: the report is kernel-specific.
+/// F1^{-1} ∘ F2 is kept as exact text (exact_text).
 struct IrregularitySummary {
   std::size_t patch = 0, target = 0; ///< indices into the partition's patch list
   std::vector<std::string> f1, f2;
-  std::vector<std::vector<Exact>> symmetry_matrix;
-  std::vector<Exact> symmetry_translation;
+  std::vector<std::vector<std::string>> symmetry_matrix;
+  std::vector<std::string> symmetry_translation;
 };
 
 template <class FT, int D>
@@ -50,14 +66,18 @@ IrregularitySummary summarise_irregularity(const BoundaryPatchPartition<FT, D>& 
   for (int i = 0; i < D; ++i) {
     s.symmetry_matrix.emplace_back();
     for (int j = 0; j < D; ++j)
-      s.symmetry_matrix.back().push_back(Exact(w.symmetry.matrix()[i][j]));
-    s.symmetry_translation.push_back(Exact(w.symmetry.translation_part()[i]));
+      s.symmetry_matrix.back().push_back(exact_text(w.symmetry.matrix()[i][j]));
+    s.symmetry_translation.push_back(exact_text(w.symmetry.translation_part()[i]));
   }
   return s;
 }
 
 struct StructureReport {
   int dimension = 0;
+  /// The exact kernel the structure was read in (set by the reader, io::kernel_name): empty for
+  /// the default rationals; field_m is m of K_m, 0 for rationals.
+  std::string kernel;
+  int field_m = 0;
   std::size_t templates = 0, instances = 0;
   bool mesh_templates = true;
   bool well_formed = false;
@@ -147,8 +167,13 @@ StructureReport analyse(const TemplatedStructure<FT, D>& x) {
   return r;
 }
 
-// Instantiated once, in instantiate.cpp, for the default exact kernel.
+// Instantiated once: in instantiate.cpp for the default exact kernel, in
+// cyclotomic_instantiations.cpp for K_m.
 extern template StructureReport analyse<Exact, 2>(const TemplatedStructure<Exact, 2>&);
 extern template StructureReport analyse<Exact, 3>(const TemplatedStructure<Exact, 3>&);
+extern template StructureReport
+analyse<number::Cyclotomic, 2>(const TemplatedStructure<number::Cyclotomic, 2>&);
+extern template StructureReport
+analyse<number::Cyclotomic, 3>(const TemplatedStructure<number::Cyclotomic, 3>&);
 
 } // namespace symmesh::core

@@ -9,6 +9,7 @@
 #include "symmesh/core/multi_region_mesh.h"
 #include "symmesh/core/rigid_transformation.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <set>
@@ -234,11 +235,26 @@ ElementComplex<FT, D> instance_interface(const StructureInstance<FT, D>& si, std
   return intersection(si.instance_complex(a), si.instance_complex(b));
 }
 
+/// Whether two lists of global vertex ids have a common element.
+inline bool share_a_vertex(std::vector<VertexId> a, std::vector<VertexId> b) {
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end();) {
+    if (*i == *j) return true;
+    *i < *j ? ++i : ++j;
+  }
+  return false;
+}
+
 /// interf_geo(X, T_a, T_b) ≠ ∅ (Eq. 4.6): the underlying spaces meet, i.e. some two cells meet.
 template <class FT, int D>
 bool geometry_interface_nonempty(const StructureInstance<FT, D>& si, std::size_t a, std::size_t b) {
   if (a == b) return true;
   if (!si.instance_box[a].overlaps(si.instance_box[b])) return false;
+  // AT identifies equal points, so a shared vertex is a common point without any arithmetic:
+  // in rotational structures every pair shares the centre, and the cell tests below would cost
+  // a number-field evaluation each.
+  if (share_a_vertex(si.vertex_map[a], si.vertex_map[b])) return true;
   const auto& m = si.at.mesh;
   const int cd = D;
   for (const auto& s : si.instance_elements[a]) {

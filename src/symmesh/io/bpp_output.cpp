@@ -2,6 +2,8 @@
 // JSON; the SVG and VTU round them to double for display only — nothing is decided from them.
 #include "symmesh/io/bpp_output.h"
 
+#include "symmesh/number/cyclotomic_cgal.h"
+
 #include "symmesh/io/plot_box.h"
 
 #include "symmesh/io/templated_structure_json.h"
@@ -24,30 +26,30 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-template <int D>
-using Bpp = core::BoundaryPatchPartition<Exact, D>;
+template <class FT, int D>
+using Bpp = core::BoundaryPatchPartition<FT, D>;
 
-template <int D>
-ojson point_json(const core::Point<Exact, D>& p) {
+template <class FT, int D>
+ojson point_json(const core::Point<FT, D>& p) {
   ojson a = ojson::array();
-  for (int d = 0; d < D; ++d) a.push_back(exact_to_string(p[d]));
+  for (int d = 0; d < D; ++d) a.push_back(core::exact_text(p[d]));
   return a;
 }
 
-template <int D>
-std::size_t subdivision_vertices(const Bpp<D>& bpp) {
+template <class FT, int D>
+std::size_t subdivision_vertices(const Bpp<FT, D>& bpp) {
   std::size_t n = 0;
   for (const auto& s : bpp.subdivisions) n += s.points.size();
   return n;
 }
 
-template <int D>
-ojson patch_json(const Bpp<D>& bpp, std::size_t p) {
+template <class FT, int D>
+ojson patch_json(const Bpp<FT, D>& bpp, std::size_t p) {
   const auto& patch = bpp.patches[p];
   ojson simplices = ojson::array();
   for (const auto& simplex : bpp.patch_simplices(p)) {
     ojson s = ojson::array();
-    for (const auto& q : simplex) s.push_back(point_json<D>(q));
+    for (const auto& q : simplex) s.push_back(point_json<FT, D>(q));
     simplices.push_back(s);
   }
   ojson j;
@@ -60,8 +62,8 @@ ojson patch_json(const Bpp<D>& bpp, std::size_t p) {
   return j;
 }
 
-template <int D>
-ojson bpp_json_impl(const core::TemplatedStructure<Exact, D>& x, const Bpp<D>& bpp) {
+template <class FT, int D>
+ojson bpp_json_impl(const core::TemplatedStructure<FT, D>& x, const Bpp<FT, D>& bpp) {
   ojson j;
   j["dimension"] = D;
   j["regular"] = bpp.regular();
@@ -89,7 +91,8 @@ ojson bpp_json_impl(const core::TemplatedStructure<Exact, D>& x, const Bpp<D>& b
 
 using P = std::array<double, 2>;
 
-P to_p(const core::Point<Exact, 2>& q) {
+template <class FT>
+P to_p(const core::Point<FT, 2>& q) {
   return {CGAL::to_double(q[0]), CGAL::to_double(q[1])};
 }
 
@@ -146,7 +149,8 @@ std::string palette_colour(std::size_t k) {
 }
 
 /// Classes with one patch relate nothing to anything else: dark grey keeps the eye on the rest.
-std::vector<std::string> class_colours(const Bpp2& bpp) {
+template <class FT>
+std::vector<std::string> class_colours(const Bpp<FT, 2>& bpp) {
   std::vector<std::string> out;
   std::size_t shared = 0;
   for (const auto& c : bpp.classes) out.push_back(c.size() > 1 ? palette_colour(shared++) : "#555");
@@ -159,13 +163,14 @@ struct Box : detail::PlotBox {
 };
 
 /// Grid of equal panels, one per template, all drawn at the same scale.
+template <class FT>
 struct Layout {
   static constexpr double kBanner = 28, kTitle = 18, kMargin = 28, kPanel = 260;
   std::vector<Box> boxes;
   std::size_t cols = 1, rows = 1;
   double scale = 1, cell_w = 0, cell_h = 0;
 
-  explicit Layout(const core::TemplatedStructure<Exact, 2>& x) {
+  explicit Layout(const core::TemplatedStructure<FT, 2>& x) {
     double extent = 0, w = 0, h = 0;
     for (const auto& t : x.templates) {
       Box b;
@@ -195,8 +200,9 @@ struct Layout {
 
 /// Where a patch's label and relation curves attach: the middle of its middle simplex, which
 /// lies on the patch (a centroid of a bent polyline need not).
-P anchor(const Layout& lay, const Bpp2& bpp, std::size_t p) {
-  std::vector<std::vector<core::Point<Exact, 2>>> top; // the closure's points are listed too
+template <class FT>
+P anchor(const Layout<FT>& lay, const Bpp<FT, 2>& bpp, std::size_t p) {
+  std::vector<std::vector<core::Point<FT, 2>>> top; // the closure's points are listed too
   for (auto& s : bpp.patch_simplices(p))
     if (int(s.size()) == bpp.patches[p].dimension + 1) top.push_back(std::move(s));
   const auto& mid = top[top.size() / 2];
@@ -209,14 +215,15 @@ P anchor(const Layout& lay, const Bpp2& bpp, std::size_t p) {
   return a;
 }
 
-void draw_panel(std::ostringstream& os, const Layout& lay,
-                const core::TemplatedStructure<Exact, 2>& x, std::size_t t) {
+template <class FT>
+void draw_panel(std::ostringstream& os, const Layout<FT>& lay,
+                const core::TemplatedStructure<FT, 2>& x, std::size_t t) {
   const auto& m = x.templates[t].mesh;
   const P o = lay.origin(t);
   os << "<g id=\"template-" << t + 1 << "\">\n";
-  os << "<text x=\"" << num(o[0] + Layout::kMargin) << "\" y=\"" << num(o[1] + Layout::kTitle)
-     << "\" font-family=\"sans-serif\" font-size=\"13\">" << xml_escape(x.templates[t].name)
-     << " (template " << t + 1 << ")</text>\n";
+  os << "<text x=\"" << num(o[0] + Layout<FT>::kMargin) << "\" y=\""
+     << num(o[1] + Layout<FT>::kTitle) << "\" font-family=\"sans-serif\" font-size=\"13\">"
+     << xml_escape(x.templates[t].name) << " (template " << t + 1 << ")</text>\n";
   // Interior cells with a same-colour stroke, so no seams show between them.
   for (const auto& e : m.elements) {
     if (e.dim() != 2) continue;
@@ -230,7 +237,8 @@ void draw_panel(std::ostringstream& os, const Layout& lay,
   os << "</g>\n";
 }
 
-void draw_patches(std::ostringstream& os, const Layout& lay, const Bpp2& bpp,
+template <class FT>
+void draw_patches(std::ostringstream& os, const Layout<FT>& lay, const Bpp<FT, 2>& bpp,
                   const std::vector<std::string>& colour) {
   // Facet patches first, so that the dots of lower-dimensional patches stay visible on top.
   for (int dim : {1, 0})
@@ -264,7 +272,8 @@ void draw_patches(std::ostringstream& os, const Layout& lay, const Bpp2& bpp,
 /// One dashed curve per unordered pair of distinct patches joined by a mapping (an arrow of the
 /// patch graph); the relation ~ is their transitive closure. Curved, so that a curve between two
 /// patches of one straight boundary does not hide the boundary.
-void draw_relation(std::ostringstream& os, const Layout& lay, const Bpp2& bpp,
+template <class FT>
+void draw_relation(std::ostringstream& os, const Layout<FT>& lay, const Bpp<FT, 2>& bpp,
                    const std::vector<std::string>& colour) {
   std::set<std::pair<std::size_t, std::size_t>> pairs;
   for (const auto& a : bpp.arrows)
@@ -281,7 +290,8 @@ void draw_relation(std::ostringstream& os, const Layout& lay, const Bpp2& bpp,
   }
 }
 
-void draw_labels(std::ostringstream& os, const Layout& lay, const Bpp2& bpp) {
+template <class FT>
+void draw_labels(std::ostringstream& os, const Layout<FT>& lay, const Bpp<FT, 2>& bpp) {
   for (std::size_t p = 0; p < bpp.patches.size(); ++p) {
     const P a = anchor(lay, bpp, p);
     os << "<text x=\"" << num(a[0] + 6) << "\" y=\"" << num(a[1] - 6)
@@ -292,7 +302,8 @@ void draw_labels(std::ostringstream& os, const Layout& lay, const Bpp2& bpp) {
 }
 
 /// The legend lists every class with its colour and (up to 8 of) its patches.
-double draw_legend(std::ostringstream& os, const Layout& lay, const Bpp2& bpp,
+template <class FT>
+double draw_legend(std::ostringstream& os, const Layout<FT>& lay, const Bpp<FT, 2>& bpp,
                    const std::vector<std::string>& colour) {
   constexpr double kColumn = 400, kLine = 16;
   const double top = lay.grid_bottom() + 30;
@@ -316,7 +327,8 @@ double draw_legend(std::ostringstream& os, const Layout& lay, const Bpp2& bpp,
   return top + 20 + double(rows) * kLine + 10;
 }
 
-std::string banner(const Bpp2& bpp) {
+template <class FT>
+std::string banner(const Bpp<FT, 2>& bpp) {
   std::ostringstream os;
   os << "Boundary patch partition (Algorithm 4.1): " << bpp.patches.size() << " patches, "
      << bpp.classes.size() << " relation classes, instance graph ";
@@ -331,8 +343,8 @@ std::string banner(const Bpp2& bpp) {
 // ---------------------------------------------------------------------------------------------
 // VTK XML.
 
-template <int D>
-P template_x_range(const core::BoundarySubdivision<Exact, D>& s) {
+template <class FT, int D>
+P template_x_range(const core::BoundarySubdivision<FT, D>& s) {
   P r{std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
   for (const auto& q : s.points) {
     r[0] = std::min(r[0], CGAL::to_double(q[0]));
@@ -342,8 +354,8 @@ P template_x_range(const core::BoundarySubdivision<Exact, D>& s) {
 }
 
 /// x shift of each template: boundaries side by side with a gap of a quarter of the widest one.
-template <int D>
-std::vector<double> x_shifts(const Bpp<D>& bpp) {
+template <class FT, int D>
+std::vector<double> x_shifts(const Bpp<FT, D>& bpp) {
   std::vector<P> range;
   double widest = 0;
   for (const auto& s : bpp.subdivisions) {
@@ -375,8 +387,8 @@ void data_array(std::ostringstream& os, const char* type, const char* name,
   os << "        </DataArray>\n";
 }
 
-template <int D>
-std::string bpp_vtu_impl(const Bpp<D>& bpp) {
+template <class FT, int D>
+std::string bpp_vtu_impl(const Bpp<FT, D>& bpp) {
   const auto shift = x_shifts(bpp);
   std::vector<std::size_t> base{0};
   for (const auto& s : bpp.subdivisions) base.push_back(base.back() + s.points.size());
@@ -430,11 +442,11 @@ ojson irregularity_json(const core::IrregularitySummary& w) {
   ojson matrix = ojson::array();
   for (const auto& row : w.symmetry_matrix) {
     ojson r = ojson::array();
-    for (const auto& a : row) r.push_back(exact_to_string(a));
+    for (const auto& a : row) r.push_back(a);
     matrix.push_back(r);
   }
   ojson translation = ojson::array();
-  for (const auto& b : w.symmetry_translation) translation.push_back(exact_to_string(b));
+  for (const auto& b : w.symmetry_translation) translation.push_back(b);
   ojson j;
   j["patch"] = w.patch;
   j["target"] = w.target;
@@ -444,15 +456,10 @@ ojson irregularity_json(const core::IrregularitySummary& w) {
   return j;
 }
 
-ojson bpp_json(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp) {
-  return bpp_json_impl<2>(x, bpp);
-}
-ojson bpp_json(const core::TemplatedStructure<Exact, 3>& x, const Bpp3& bpp) {
-  return bpp_json_impl<3>(x, bpp);
-}
-
-std::string bpp_svg(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp) {
-  const Layout lay(x);
+namespace {
+template <class FT>
+std::string bpp_svg_impl(const core::TemplatedStructure<FT, 2>& x, const Bpp<FT, 2>& bpp) {
+  const Layout<FT> lay(x);
   const auto colour = class_colours(bpp);
   std::ostringstream body;
   body << "<text x=\"10\" y=\"18\" font-family=\"sans-serif\" font-size=\"13\">"
@@ -472,11 +479,39 @@ std::string bpp_svg(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp
   return os.str();
 }
 
+} // namespace
+
+ojson bpp_json(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp) {
+  return bpp_json_impl<Exact, 2>(x, bpp);
+}
+ojson bpp_json(const core::TemplatedStructure<Exact, 3>& x, const Bpp3& bpp) {
+  return bpp_json_impl<Exact, 3>(x, bpp);
+}
+ojson bpp_json(const core::TemplatedStructure<Cyclotomic, 2>& x, const CyclotomicBpp2& bpp) {
+  return bpp_json_impl<Cyclotomic, 2>(x, bpp);
+}
+ojson bpp_json(const core::TemplatedStructure<Cyclotomic, 3>& x, const CyclotomicBpp3& bpp) {
+  return bpp_json_impl<Cyclotomic, 3>(x, bpp);
+}
+
+std::string bpp_svg(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp) {
+  return bpp_svg_impl<Exact>(x, bpp);
+}
+std::string bpp_svg(const core::TemplatedStructure<Cyclotomic, 2>& x, const CyclotomicBpp2& bpp) {
+  return bpp_svg_impl<Cyclotomic>(x, bpp);
+}
+
 std::string bpp_vtu(const Bpp2& bpp) {
-  return bpp_vtu_impl<2>(bpp);
+  return bpp_vtu_impl<Exact, 2>(bpp);
 }
 std::string bpp_vtu(const Bpp3& bpp) {
-  return bpp_vtu_impl<3>(bpp);
+  return bpp_vtu_impl<Exact, 3>(bpp);
+}
+std::string bpp_vtu(const CyclotomicBpp2& bpp) {
+  return bpp_vtu_impl<Cyclotomic, 2>(bpp);
+}
+std::string bpp_vtu(const CyclotomicBpp3& bpp) {
+  return bpp_vtu_impl<Cyclotomic, 3>(bpp);
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {

@@ -48,12 +48,12 @@ std::string symmetry_text(const core::IrregularitySummary& w) {
   for (std::size_t i = 0; i < w.symmetry_matrix.size(); ++i) {
     m += i ? ", [" : "[";
     for (std::size_t k = 0; k < w.symmetry_matrix[i].size(); ++k)
-      m += (k ? ", " : "") + exact_to_string(w.symmetry_matrix[i][k]);
+      m += (k ? ", " : "") + w.symmetry_matrix[i][k];
     m += "]";
   }
   m += "] x + [";
   for (std::size_t i = 0; i < w.symmetry_translation.size(); ++i)
-    m += (i ? ", " : "") + exact_to_string(w.symmetry_translation[i]);
+    m += (i ? ", " : "") + w.symmetry_translation[i];
   return "x -> " + m + "]";
 }
 
@@ -84,7 +84,8 @@ std::string report_to_json(const core::StructureReport& r) {
   j["templates"] = r.templates;
   j["instances"] = r.instances;
   j["kind"] = r.mesh_templates ? "mesh" : "geometry";
-  j["kernel"] = kKernel;
+  j["kernel"] = r.kernel.empty() ? kKernel : r.kernel;
+  j["field_m"] = r.field_m;
   j["well_formed"] = r.well_formed;
   j["templated_structure"] = r.templated_structure;
   j["templated_mesh"] = r.templated_mesh;
@@ -135,7 +136,7 @@ std::string report_to_text(const core::StructureReport& r, const std::string& so
   std::ostringstream os;
   os << source << ": " << r.dimension << "D, " << r.templates << " template(s) ("
      << (r.mesh_templates ? "meshes" : "geometries") << "), " << r.instances
-     << " instance(s), kernel " << kKernel << "\n";
+     << " instance(s), kernel " << (r.kernel.empty() ? kKernel : r.kernel) << "\n";
   if (!r.well_formed) {
     os << "  not a valid input: " << r.error << "\n";
     return os.str();

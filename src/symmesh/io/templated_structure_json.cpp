@@ -8,10 +8,12 @@
 #include "symmesh/io/templated_structure_json.h"
 
 #include "symmesh/core/element_complex.h"
+#include "symmesh/number/cyclotomic_cgal.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -20,12 +22,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -112,18 +116,96 @@ std::string strip_zeros(const std::string& digits) {
 }
 
 /// ±num/den from decimal digit strings (den != 0), reduced to lowest terms.
-Rational make_rational(bool negative, const std::string& num, const std::string& den) {
-  Rational q;
+mpq_class make_rational(bool negative, const std::string& num, const std::string& den) {
+  mpq_class q;
   const std::string text = (negative ? "-" : "") + strip_zeros(num) + "/" + strip_zeros(den);
-  if (mpq_set_str(raw_mpq(q), text.c_str(), 10) != 0)
+  if (mpq_set_str(q.get_mpq_t(), text.c_str(), 10) != 0)
     throw std::logic_error("make_rational: GMP rejected " + text);
-  mpq_canonicalize(raw_mpq(q));
+  mpq_canonicalize(q.get_mpq_t());
   return q;
+}
+
+/// "n" or "n/d" of a canonical rational (mpq_get_str omits a denominator 1).
+std::string rational_text(mpq_srcptr q) {
+  std::string out(mpz_sizeinbase(mpq_numref(q), 10) + mpz_sizeinbase(mpq_denref(q), 10) + 3, '\0');
+  mpq_get_str(out.data(), 10, q);
+  out.resize(std::char_traits<char>::length(out.c_str()));
+  return out;
 }
 
 std::string lower(std::string s) {
   for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
   return s;
+}
+
+/// "n", "n/d" or a decimal, exactly (spec/input-format.md#numbers).
+mpq_class parse_rational(const std::string& text, const std::string& field) {
+  if (text.empty()) fail(field, "empty string is not a number");
+  if (text.size() > kMaxNumberLength)
+    fail(field, "number has more than " + std::to_string(kMaxNumberLength) + " characters");
+  {
+    std::string l = lower(text);
+    if (!l.empty() && (l[0] == '+' || l[0] == '-')) l.erase(0, 1);
+    if (l == "nan" || l == "inf" || l == "infinity")
+      fail(field, quote_text(text) + " is not allowed: NaN and infinities are not exact numbers");
+  }
+  const std::string bad = quote_text(text) +
+                          " is not an exact number (expected \"n\", \"n/d\" or a decimal such as "
+                          "\"-0.25\" or \"1.5e-3\")";
+  std::size_t i = 0;
+  bool negative = false;
+  if (text[0] == '+' || text[0] == '-') {
+    negative = text[0] == '-';
+    i = 1;
+  }
+  const std::string body = text.substr(i);
+  if (const auto slash = body.find('/'); slash != std::string::npos) {
+    const std::string num = body.substr(0, slash);
+    const std::string den = body.substr(slash + 1);
+    if (!all_digits(num) || !all_digits(den)) fail(field, bad);
+    if (strip_zeros(den) == "0") fail(field, quote_text(text) + " has a zero denominator");
+    return (make_rational(negative, num, den));
+  }
+  {
+    // decimal := (digits ["." [digits]] | "." digits) [("e"|"E") [sign] digits]
+    std::string mantissa = body, exponent;
+    if (const auto e = body.find_first_of("eE"); e != std::string::npos) {
+      mantissa = body.substr(0, e);
+      exponent = body.substr(e + 1);
+      if (exponent.empty()) fail(field, bad);
+    }
+    std::string int_part = mantissa, frac_part;
+    if (const auto p = mantissa.find('.'); p != std::string::npos) {
+      int_part = mantissa.substr(0, p);
+      frac_part = mantissa.substr(p + 1);
+      if (int_part.empty() && frac_part.empty()) fail(field, bad);
+      if (!int_part.empty() && !all_digits(int_part)) fail(field, bad);
+      if (!frac_part.empty() && !all_digits(frac_part)) fail(field, bad);
+    } else if (!all_digits(int_part)) {
+      fail(field, bad);
+    }
+    long e10 = 0;
+    if (!exponent.empty()) {
+      bool eneg = false;
+      std::string ed = exponent;
+      if (ed[0] == '+' || ed[0] == '-') {
+        eneg = ed[0] == '-';
+        ed.erase(0, 1);
+      }
+      if (!all_digits(ed)) fail(field, bad);
+      const auto nz = ed.find_first_not_of('0');
+      ed = nz == std::string::npos ? "0" : ed.substr(nz);
+      if (ed.size() > 6 || std::stol(ed) > kMaxExponent)
+        fail(field, "the exponent of " + quote_text(text) + " is out of range (at most " +
+                        std::to_string(kMaxExponent) + ")");
+      e10 = eneg ? -std::stol(ed) : std::stol(ed);
+    }
+    e10 -= long(frac_part.size());
+    const std::string digits = int_part + frac_part;
+    if (e10 >= 0)
+      return (make_rational(negative, digits + std::string(std::size_t(e10), '0'), "1"));
+    return (make_rational(negative, digits, "1" + std::string(std::size_t(-e10), '0')));
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -255,27 +337,420 @@ long long get_integer(const json& j, const std::string& path, long long lo, long
   return v;
 }
 
-Exact get_exact(const json& j, const std::string& path) {
-  if (j.is_string()) return parse_exact(j.get<std::string>(), path);
-  if (j.is_number_integer()) return parse_exact(j.dump(), path);
+// ---------------------------------------------------------------------------------------------
+// Symbolic numbers and the kernel of a document (spec/input-format.md#symbolic-numbers,
+// spec/number-type.md#kernel-choice)
+
+/// The largest m of a field K_m a document may ask for: K_m has degree φ(m)/2, and every
+/// product costs about its square, so m = 1024 (degree 256) is already slow.
+constexpr long long kMaxFieldOrder = 1024;
+
+/// The field of the document being read, null for the rational kernel. A document is read in
+/// one kernel, chosen by a pre-scan before any number is built, so the field is state of the
+/// whole read rather than a parameter of every reader function.
+thread_local number::CyclotomicFieldPtr t_field;
+
+class FieldScope {
+public:
+  explicit FieldScope(number::CyclotomicFieldPtr field) { t_field = std::move(field); }
+  ~FieldScope() { t_field.reset(); }
+  FieldScope(const FieldScope&) = delete;
+  FieldScope& operator=(const FieldScope&) = delete;
+};
+
+/// The symmetry orders a document needs, each with the first JSON path asking for it.
+using OrderDemands = std::map<long long, std::string>;
+
+void demand(OrderDemands& d, long long order, const std::string& path) {
+  if (order != 1 && order != 2 && order != 4) d.emplace(order, path);
+}
+
+/// A leaf of a written number: a rational, cos(2pi*k/n), sin(2pi*k/n) or K<m>[a_0, ...].
+struct WrittenNumber {
+  enum class Kind { rational, cos, sin, field_element } kind = Kind::rational;
+  mpq_class value = 0;    ///< rational
+  long long k = 0, n = 1; ///< cos/sin of 2πk/n in lowest terms (n is the order)
+  int m = 0;              ///< field_element: K_m
+  std::vector<mpq_class> coefficients;
+};
+
+/// 2πk/n in lowest terms 2πk'/n' with 0 <= k' < n'.
+std::pair<long long, long long> reduce_angle(long long k, long long n) {
+  long long kk = ((k % n) + n) % n;
+  const long long g = std::gcd(kk, n);
+  return {kk / g, n / g};
+}
+
+/// cos and sin of 2πk/n when they are rational (order n ∈ {1, 2, 4} in lowest terms).
+std::optional<std::pair<int, int>> rational_cos_sin(long long k, long long n) {
+  const auto [kk, order] = reduce_angle(k, n);
+  if (order == 1) return std::pair{1, 0};
+  if (order == 2) return std::pair{-1, 0};
+  if (order == 4) return std::pair{0, kk == 1 ? 1 : -1};
+  return std::nullopt;
+}
+
+/// A number as written (spec/input-format.md#numbers): an arithmetic expression with + - * /
+/// and parentheses over WrittenNumber leaves, e.g. "cos(2pi*1/5)/cos(2pi*1/10)".
+struct NumberExpr {
+  enum class Op { leaf, add, sub, mul, div, neg } op = Op::leaf;
+  WrittenNumber leaf;
+  std::vector<NumberExpr> args;
+};
+
+/// Recursive descent over the text without spaces; every error names the field and the text.
+class NumberParser {
+public:
+  NumberParser(const std::string& raw, const std::string& path) : raw_(raw), path_(path) {
+    for (char c : raw)
+      if (c != ' ') text_ += c;
+  }
+
+  NumberExpr parse() {
+    if (text_.empty()) error("empty expression");
+    NumberExpr e = sum(0);
+    if (pos_ != text_.size()) error("unexpected '" + std::string(1, text_[pos_]) + "'");
+    return e;
+  }
+
+private:
+  static constexpr int kMaxDepth = 64;
+
+  [[noreturn]] void error(const std::string& what) const {
+    fail(path_, quote_text(raw_) + " is not an exact number: " + what +
+                    " (expected rationals, "
+                    "cos(2pi*k/n), sin(2pi*k/n), K<m>[a_0, ...], + - * / and parentheses)");
+  }
+  bool eat(char c) {
+    if (pos_ < text_.size() && text_[pos_] == c) {
+      ++pos_;
+      return true;
+    }
+    return false;
+  }
+  void expect(char c) {
+    if (!eat(c)) error(std::string("expected '") + c + "'");
+  }
+  bool starts(const char* word) const { return text_.compare(pos_, std::strlen(word), word) == 0; }
+
+  NumberExpr node(NumberExpr::Op op, std::vector<NumberExpr> args) {
+    NumberExpr e;
+    e.op = op;
+    e.args = std::move(args);
+    return e;
+  }
+
+  NumberExpr sum(int depth) {
+    if (depth > kMaxDepth) error("nested too deeply");
+    NumberExpr e = product(depth);
+    while (pos_ < text_.size() && (text_[pos_] == '+' || text_[pos_] == '-')) {
+      const auto op = text_[pos_++] == '+' ? NumberExpr::Op::add : NumberExpr::Op::sub;
+      e = node(op, {std::move(e), product(depth)});
+    }
+    return e;
+  }
+  NumberExpr product(int depth) {
+    NumberExpr e = unary(depth);
+    while (pos_ < text_.size() && (text_[pos_] == '*' || text_[pos_] == '/')) {
+      const auto op = text_[pos_++] == '*' ? NumberExpr::Op::mul : NumberExpr::Op::div;
+      e = node(op, {std::move(e), unary(depth)});
+    }
+    return e;
+  }
+  NumberExpr unary(int depth) {
+    if (depth > kMaxDepth) error("nested too deeply");
+    if (eat('+')) return unary(depth + 1);
+    if (eat('-')) return node(NumberExpr::Op::neg, {unary(depth + 1)});
+    return primary(depth);
+  }
+  NumberExpr primary(int depth) {
+    if (eat('(')) {
+      NumberExpr e = sum(depth + 1);
+      expect(')');
+      return e;
+    }
+    NumberExpr e;
+    if (starts("cos(") || starts("sin(")) {
+      e.leaf.kind = starts("cos(") ? WrittenNumber::Kind::cos : WrittenNumber::Kind::sin;
+      pos_ += 4;
+      if (!starts("2pi")) error("expected 2pi after " + text_.substr(pos_ - 4, 4));
+      pos_ += 3;
+      const long long k = eat('*') ? integer(-1000000000, 1000000000) : 1;
+      expect('/');
+      const long long n = integer(1, 1000000);
+      expect(')');
+      std::tie(e.leaf.k, e.leaf.n) = reduce_angle(k, n);
+      return e;
+    }
+    if (eat('K')) {
+      e.leaf.kind = WrittenNumber::Kind::field_element;
+      e.leaf.m = int(integer(3, kMaxFieldOrder));
+      expect('[');
+      do e.leaf.coefficients.push_back(field_coefficient());
+      while (eat(','));
+      expect(']');
+      const std::size_t d = std::size_t(number::euler_phi(e.leaf.m) / 2);
+      if (e.leaf.coefficients.size() != d)
+        error("K" + std::to_string(e.leaf.m) + " has degree " + std::to_string(d) + ", so an " +
+              "element has " + std::to_string(d) + " coefficients (of 1, c, ..., c^" +
+              std::to_string(d - 1) + " for c = 2cos(2pi/" + std::to_string(e.leaf.m) + ")), got " +
+              std::to_string(e.leaf.coefficients.size()));
+      return e;
+    }
+    e.leaf.value = parse_rational(literal(), path_);
+    return e;
+  }
+  /// An unsigned decimal: digits, '.', an exponent ("1.5e-3").
+  std::string literal() {
+    const std::size_t start = pos_;
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      const bool exponent_sign = (c == '-' || c == '+') && pos_ > start &&
+                                 (text_[pos_ - 1] == 'e' || text_[pos_ - 1] == 'E');
+      if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' ||
+            exponent_sign))
+        break;
+      ++pos_;
+    }
+    if (pos_ == start)
+      error(pos_ < text_.size() ? "unexpected '" + std::string(1, text_[pos_]) + "'"
+                                : "unexpected end");
+    return text_.substr(start, pos_ - start);
+  }
+  /// A coefficient of K<m>[...]: [sign] decimal [/ decimal].
+  mpq_class field_coefficient() {
+    std::string sign;
+    if (pos_ < text_.size() && (text_[pos_] == '-' || text_[pos_] == '+')) sign = text_[pos_++];
+    std::string q = sign + literal();
+    if (eat('/')) q += "/" + literal();
+    return parse_rational(q, path_);
+  }
+  long long integer(long long lo, long long hi) {
+    const std::size_t start = pos_;
+    if (pos_ < text_.size() && (text_[pos_] == '-' || text_[pos_] == '+')) ++pos_;
+    while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    std::string d = text_.substr(start, pos_ - start);
+    bool negative = false;
+    if (!d.empty() && (d[0] == '-' || d[0] == '+')) {
+      negative = d[0] == '-';
+      d.erase(0, 1);
+    }
+    if (d.empty()) error("expected an integer");
+    d = strip_zeros(d);
+    const std::string range = " (" + std::to_string(lo) + ".." + std::to_string(hi) + ")";
+    if (d.size() > 12) error(text_.substr(start, pos_ - start) + " is out of range" + range);
+    const long long v = negative ? -std::stoll(d) : std::stoll(d);
+    if (v < lo || v > hi) error(std::to_string(v) + " is out of range" + range);
+    return v;
+  }
+
+  const std::string& raw_;
+  const std::string& path_;
+  std::string text_;
+  std::size_t pos_ = 0;
+};
+
+/// Plain rationals keep the rational grammar and its messages; anything with a function, a
+/// field literal or an operator beyond "n/d" is an expression.
+bool is_expression(const std::string& text) {
+  return text.find_first_of("([*K") != std::string::npos || text.find("cos") != std::string::npos ||
+         text.find("sin") != std::string::npos;
+}
+
+/// The orders a written number needs (cos/sin of order n need K_m with n | m; K<m'> needs m' | m).
+void collect_orders(const NumberExpr& e, const std::string& path, OrderDemands& d) {
+  if (e.op == NumberExpr::Op::leaf) {
+    if (e.leaf.kind == WrittenNumber::Kind::cos || e.leaf.kind == WrittenNumber::Kind::sin)
+      demand(d, e.leaf.n, path);
+    if (e.leaf.kind == WrittenNumber::Kind::field_element) d.emplace(e.leaf.m, path);
+  }
+  for (const auto& a : e.args) collect_orders(a, path, d);
+}
+
+/// An {"order": n, "k": k} object (rotation or reflection angle); malformed ones are left to the
+/// reader, which reports them with their path.
+void scan_angle(const json& v, const std::string& path, OrderDemands& d) {
+  if (!v.is_object() || !v.contains("order") || !v["order"].is_number_integer()) return;
+  long long k = 1;
+  if (v.contains("k") && v["k"].is_number_integer()) k = v["k"].get<long long>();
+  const long long n = v["order"].get<long long>();
+  if (n < 1 || n > 1000000 || k < -1000000000 || k > 1000000000) return;
+  demand(d, reduce_angle(k, n).second, dot(path, "order"));
+}
+
+/// Collects the orders of every symbolic rotation/reflection and symbolic number.
+void scan_orders(const json& j, const std::string& path, OrderDemands& d) {
+  if (j.is_object()) {
+    for (const auto& item : j.items()) {
+      const std::string& key = item.key();
+      if (key == "name" || key == "description") continue;
+      const std::string p = path.empty() ? key : dot(path, key);
+      if (key == "rotation" || key == "angle") scan_angle(item.value(), p, d);
+      scan_orders(item.value(), p, d);
+    }
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) scan_orders(j[i], at(path, i), d);
+  } else if (j.is_string()) {
+    const std::string& s = j.get_ref<const std::string&>();
+    if (!is_expression(s)) return;
+    try {
+      collect_orders(NumberParser(s, path).parse(), path, d);
+    } catch (const InputError&) {
+      // not a number: the reader reports it where a number is expected
+    }
+  }
+}
+
+/// The kernel of a document: null (rationals) when every order is 1, 2 or 4, otherwise K_m for
+/// the smallest m divisible by 4 and by every order.
+number::CyclotomicFieldPtr choose_field(const json& root) {
+  OrderDemands d;
+  scan_orders(root, "", d);
+  if (d.empty()) return nullptr;
+  long long m = 4;
+  std::string orders;
+  for (const auto& [order, path] : d) {
+    m = std::lcm(m, order);
+    orders += (orders.empty() ? "" : ", ") + std::to_string(order);
+    if (m > kMaxFieldOrder)
+      fail(path, "the symmetry orders " + orders + " need the field K_m with m = lcm(4, " + orders +
+                     ") > " + std::to_string(kMaxFieldOrder) + ", the largest supported");
+  }
+  return number::CyclotomicField::get(int(m));
+}
+
+mpq_class to_mpq(const Rational& r) {
+  mpq_class q;
+  mpq_set(q.get_mpq_t(), raw_mpq(r));
+  return q;
+}
+
+Exact to_exact(const mpq_class& q) {
+  Rational r;
+  mpq_set(raw_mpq(r), q.get_mpq_t());
+  return Exact(r);
+}
+
+/// q as a number of the kernel.
+template <class FT>
+FT from_rational(const mpq_class& q) {
+  if constexpr (std::is_same_v<FT, Exact>)
+    return to_exact(q);
+  else
+    return t_field ? t_field->element({q}) : FT(q);
+}
+
+/// cos(2πk/n), sin(2πk/n) in the kernel of the document.
+template <class FT>
+std::pair<FT, FT> cos_sin(long long k, long long n, const std::string& path) {
+  if constexpr (std::is_same_v<FT, Exact>) {
+    const auto cs = rational_cos_sin(k, n);
+    if (!cs) fail(path, "internal error: order " + std::to_string(n) + " in the rational kernel");
+    return {FT(cs->first), FT(cs->second)};
+  } else {
+    if (!t_field) fail(path, "internal error: no field chosen");
+    const auto [kk, order] = reduce_angle(k, n);
+    return {t_field->cos_2pi(long(kk), long(order)), t_field->sin_2pi(long(kk), long(order))};
+  }
+}
+
+template <class FT>
+FT evaluate(const NumberExpr& e, const std::string& raw, const std::string& path) {
+  using Op = NumberExpr::Op;
+  using Kind = WrittenNumber::Kind;
+  switch (e.op) {
+  case Op::add:
+    return evaluate<FT>(e.args[0], raw, path) + evaluate<FT>(e.args[1], raw, path);
+  case Op::sub:
+    return evaluate<FT>(e.args[0], raw, path) - evaluate<FT>(e.args[1], raw, path);
+  case Op::mul:
+    return evaluate<FT>(e.args[0], raw, path) * evaluate<FT>(e.args[1], raw, path);
+  case Op::neg:
+    return -evaluate<FT>(e.args[0], raw, path);
+  case Op::div: {
+    const FT d = evaluate<FT>(e.args[1], raw, path);
+    if (d == 0) fail(path, quote_text(raw) + " divides by zero");
+    return evaluate<FT>(e.args[0], raw, path) / d;
+  }
+  case Op::leaf:
+    break;
+  }
+  const WrittenNumber& w = e.leaf;
+  if (w.kind == Kind::rational) return from_rational<FT>(w.value);
+  if (w.kind == Kind::cos || w.kind == Kind::sin) {
+    const auto [c, s] = cos_sin<FT>(w.k, w.n, path);
+    return w.kind == Kind::cos ? c : s;
+  }
+  if constexpr (std::is_same_v<FT, Exact>) {
+    fail(path, "internal error: a field element in the rational kernel");
+  } else {
+    // K_{m'} ⊂ K_m (m' | m): its generator 2cos(2π/m') is 2cos(2π(m/m')/m); Horner.
+    const FT c = t_field->two_cos_2pi_over_m(long(t_field->m() / w.m));
+    FT v = t_field->zero();
+    for (std::size_t i = w.coefficients.size(); i-- > 0;)
+      v = v * c + from_rational<FT>(w.coefficients[i]);
+    return v;
+  }
+}
+
+template <class FT>
+FT get_number(const json& j, const std::string& path) {
+  if (j.is_string()) {
+    const std::string& text = j.get_ref<const std::string&>();
+    if (!is_expression(text)) return from_rational<FT>(parse_rational(text, path));
+    return evaluate<FT>(NumberParser(text, path).parse(), text, path);
+  }
+  if (j.is_number_integer()) return from_rational<FT>(parse_rational(j.dump(), path));
   if (j.is_number_float())
     fail(path, "the JSON number " + j.dump() +
                    " is not exact: give non-integer (and very large) numbers as strings, e.g. "
                    "\"0.25\" or \"1/4\"");
   fail(path,
-       "expected an exact number (a string such as \"3/5\" or \"-0.25\", or a JSON integer), got " +
+       "expected an exact number (a string such as \"3/5\", \"-0.25\" or \"cos(2pi*1/8)\", or a "
+       "JSON integer), got " +
            type_name(j));
 }
 
-template <int D>
-core::Point<Exact, D> get_point(const json& j, const std::string& path,
-                                const char* what = "coordinates") {
+/// Exact text of a number as the reader accepts it back: "n/d", or "K<m>[a_0, ...]".
+template <class FT>
+std::string number_text(const FT& x) {
+  if constexpr (std::is_same_v<FT, Exact>) {
+    return exact_to_string(x);
+  } else {
+    if (x.is_rational()) return rational_text(x.rational_value().get_mpq_t());
+    std::ostringstream os;
+    os << x;
+    return os.str();
+  }
+}
+
+/// |u| when it is rational (u · u the square of a rational), which a rotation axis needs.
+template <class FT>
+std::optional<FT> rational_sqrt(const FT& x) {
+  mpq_class q;
+  if constexpr (std::is_same_v<FT, Exact>) {
+    q = to_mpq(CGAL::exact(x));
+  } else {
+    if (!x.is_rational()) return std::nullopt;
+    q = x.rational_value();
+  }
+  if (q < 0 || !mpz_perfect_square_p(q.get_num_mpz_t()) || !mpz_perfect_square_p(q.get_den_mpz_t()))
+    return std::nullopt;
+  mpz_class num, den;
+  mpz_sqrt(num.get_mpz_t(), q.get_num_mpz_t());
+  mpz_sqrt(den.get_mpz_t(), q.get_den_mpz_t());
+  return from_rational<FT>(mpq_class(num, den));
+}
+
+template <class FT, int D>
+core::Point<FT, D> get_point(const json& j, const std::string& path,
+                             const char* what = "coordinates") {
   expect_array(j, path, "an array of " + std::to_string(D) + " " + what);
   if (j.size() != std::size_t(D))
     fail(path, "expected " + std::to_string(D) + " " + what + " (dimension " + std::to_string(D) +
                    "), got " + std::to_string(j.size()));
-  core::Point<Exact, D> p;
-  for (int d = 0; d < D; ++d) p[d] = get_exact(j[std::size_t(d)], at(path, std::size_t(d)));
+  core::Point<FT, D> p;
+  for (int d = 0; d < D; ++d) p[d] = get_number<FT>(j[std::size_t(d)], at(path, std::size_t(d)));
   return p;
 }
 
@@ -297,8 +772,8 @@ std::array<int, D> get_int_array(const json& j, const std::string& path, long lo
 constexpr const char* kTransformationKinds =
     "identity, translation, reflection, rotation, signed_permutation, matrix, compose";
 
-template <int D>
-using Rigid = core::RigidTransformation<Exact, D>;
+template <class FT, int D>
+using Rigid = core::RigidTransformation<FT, D>;
 
 /// Runs a core constructor; its std::invalid_argument becomes an InputError at `path`.
 template <class F>
@@ -310,63 +785,160 @@ auto guarded(const std::string& path, F&& f) -> decltype(f()) {
   }
 }
 
-template <int D>
-Rigid<D> parse_rotation(const json& r, const std::string& path) {
+/// x -> A (x - c) + c, checked to be rigid.
+template <class FT, int D>
+Rigid<FT, D> about_center(const typename Rigid<FT, D>::Mat& a, const core::Point<FT, D>& c,
+                          const std::string& path) {
+  core::Point<FT, D> b;
+  for (int i = 0; i < D; ++i) {
+    FT s = c[i];
+    for (int j = 0; j < D; ++j) s -= a[i][j] * c[j];
+    b[i] = s;
+  }
+  return guarded(path, [&] { return Rigid<FT, D>::from_matrix(a, b); });
+}
+
+/// {"order": n, "k": k} (k defaults to 1): the angle 2πk/n.
+std::pair<long long, long long> get_angle(const json& v, const std::string& path) {
+  const long long n =
+      get_integer(require(v, "order", path), dot(path, "order"), 1, 1000000, "a positive integer");
+  long long k = 1;
+  if (v.contains("k")) k = get_integer(v["k"], dot(path, "k"), -1000000000, 1000000000);
+  return {k, n};
+}
+
+/// "x", "y" or "z": the index of a coordinate axis.
+int get_coordinate_axis(const json& j, const std::string& path) {
+  if (j.is_string()) {
+    const std::string a = j.get<std::string>();
+    if (a == "x" || a == "y" || a == "z") return a[0] - 'x';
+  }
+  fail(path, "expected a coordinate axis \"x\", \"y\" or \"z\", got " + j.dump());
+}
+
+/// The unit direction of a rotation axis: "x"/"y"/"z" or a vector of rational length.
+template <class FT>
+core::Point<FT, 3> get_unit_axis(const json& j, const std::string& path) {
+  core::Point<FT, 3> u = core::zero_point<FT, 3>();
+  if (j.is_string()) {
+    u[get_coordinate_axis(j, path)] = from_rational<FT>(1);
+    return u;
+  }
+  u = get_point<FT, 3>(j, path, "direction components");
+  const FT uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+  if (uu == 0) fail(path, "the axis is the zero vector");
+  const auto length = rational_sqrt(uu);
+  if (!length)
+    fail(path, "the axis has irrational length sqrt(" + number_text(uu) +
+                   "): give an axis of rational length (e.g. [1, 2, 2]) or a coordinate axis");
+  for (auto& x : u) x /= *length;
+  return u;
+}
+
+/// Rotation by 2πk/n ("order", "k"): about "center" in 2D, about the line through "center" along
+/// "axis" in 3D (Rodrigues: R = cI + s[u]x + (1 - c) u uᵀ for a unit axis u).
+template <class FT, int D>
+Rigid<FT, D> symbolic_rotation(const json& r, const std::string& path,
+                               const core::Point<FT, D>& center) {
+  if constexpr (D == 2)
+    check_keys(r, path, {"order", "k", "center"});
+  else
+    check_keys(r, path, {"order", "k", "axis", "center"});
+  const auto [k, n] = get_angle(r, path);
+  const auto [c, s] = cos_sin<FT>(k, n, dot(path, "order"));
+  typename Rigid<FT, D>::Mat a;
+  if constexpr (D == 2) {
+    a = {{{c, -s}, {s, c}}};
+  } else {
+    const auto u = get_unit_axis<FT>(require(r, "axis", path), dot(path, "axis"));
+    const FT one = from_rational<FT>(1);
+    const FT t = one - c;
+    a = {{{c + t * u[0] * u[0], t * u[0] * u[1] - s * u[2], t * u[0] * u[2] + s * u[1]},
+          {t * u[1] * u[0] + s * u[2], c + t * u[1] * u[1], t * u[1] * u[2] - s * u[0]},
+          {t * u[2] * u[0] - s * u[1], t * u[2] * u[1] + s * u[0], c + t * u[2] * u[2]}}};
+  }
+  return about_center<FT, D>(a, center, path);
+}
+
+template <class FT, int D>
+Rigid<FT, D> parse_rotation(const json& r, const std::string& path) {
   expect_object(r, path);
-  core::Point<Exact, D> center = core::zero_point<Exact, D>();
-  if (r.contains("center")) center = get_point<D>(r["center"], dot(path, "center"));
+  core::Point<FT, D> center = core::zero_point<FT, D>();
+  if (r.contains("center")) center = get_point<FT, D>(r["center"], dot(path, "center"));
+  if (r.contains("order")) return symbolic_rotation<FT, D>(r, path, center);
   if constexpr (D == 3) {
     if (!r.contains("quaternion"))
-      fail(path,
-           "a 3D rotation is given by \"quaternion\": [w, x, y, z] (and an optional \"center\")");
+      fail(path, "a 3D rotation is given by \"quaternion\": [w, x, y, z] or by \"order\", \"k\" "
+                 "and \"axis\" (and an optional \"center\")");
     check_keys(r, path, {"quaternion", "center"});
     const std::string qp = dot(path, "quaternion");
     const json& q = r["quaternion"];
     expect_array(q, qp, "an array of 4 exact numbers [w, x, y, z]");
     if (q.size() != 4) fail(qp, "expected 4 numbers [w, x, y, z], got " + std::to_string(q.size()));
-    std::array<Exact, 4> c;
-    for (std::size_t k = 0; k < 4; ++k) c[k] = get_exact(q[k], at(qp, k));
-    return guarded(qp,
-                   [&] { return Rigid<D>::rotation_quaternion(c[0], c[1], c[2], c[3], center); });
+    std::array<FT, 4> c;
+    for (std::size_t k = 0; k < 4; ++k) c[k] = get_number<FT>(q[k], at(qp, k));
+    return guarded(
+        qp, [&] { return Rigid<FT, D>::rotation_quaternion(c[0], c[1], c[2], c[3], center); });
   } else {
     if (r.contains("quaternion")) fail(dot(path, "quaternion"), "quaternion rotations are 3D only");
-    if (r.contains("order")) {
-      check_keys(r, path, {"order", "k", "center"});
-      const long long n =
-          get_integer(r["order"], dot(path, "order"), 1, 1000000000, "a positive integer");
-      long long k = 1;
-      if (r.contains("k")) k = get_integer(r["k"], dot(path, "k"), -1000000000, 1000000000);
-      // The angle 2πk/n in lowest terms 2πk'/n'; only n' ∈ {1, 2, 4} has rational cos and sin.
-      long long kk = ((k % n) + n) % n;
-      const long long g = std::gcd(kk, n);
-      const long long order = n / g;
-      kk /= g;
-      Exact c, s;
-      if (order == 1) {
-        c = 1, s = 0;
-      } else if (order == 2) {
-        c = -1, s = 0;
-      } else if (order == 4) {
-        c = 0, s = kk == 1 ? 1 : -1;
-      } else {
-        fail(dot(path, "order"), "rotation order " + std::to_string(order) +
-                                     " needs the cyclotomic kernel, not available yet");
-      }
-      return Rigid<D>::rotation_2d(c, s, center);
-    }
     if (r.contains("cos") || r.contains("sin")) {
       check_keys(r, path, {"cos", "sin", "center"});
-      const Exact c = get_exact(require(r, "cos", path), dot(path, "cos"));
-      const Exact s = get_exact(require(r, "sin", path), dot(path, "sin"));
-      return guarded(path, [&] { return Rigid<D>::rotation_2d(c, s, center); });
+      const FT c = get_number<FT>(require(r, "cos", path), dot(path, "cos"));
+      const FT s = get_number<FT>(require(r, "sin", path), dot(path, "sin"));
+      return guarded(path, [&] { return Rigid<FT, D>::rotation_2d(c, s, center); });
     }
     fail(path, "a 2D rotation is given by \"cos\" and \"sin\" or by \"order\" and \"k\" (and an "
                "optional \"center\")");
   }
 }
 
-template <int D>
-Rigid<D> parse_transformation(const json& t, const std::string& path, int depth = 0) {
+/// Reflection through the line (2D) or the plane containing "axis" (3D) that passes through
+/// "through" at the angle πk/n: {"angle": {"order": n, "k": k}}. Its matrix has cos and sin of
+/// 2πk/n, so it needs the same field as a rotation of order n.
+template <class FT, int D>
+Rigid<FT, D> angle_reflection(const json& v, const std::string& path) {
+  if constexpr (D == 2)
+    check_keys(v, path, {"angle", "through"});
+  else
+    check_keys(v, path, {"angle", "axis", "through"});
+  const std::string ap = dot(path, "angle");
+  const json& aj = v["angle"];
+  expect_object(aj, ap, "an object {\"order\": n, \"k\": k} (the angle pi*k/n)");
+  check_keys(aj, ap, {"order", "k"});
+  const auto [k, n] = get_angle(aj, ap);
+  const auto [c, s] = cos_sin<FT>(k, n, dot(ap, "order"));
+  core::Point<FT, D> through = core::zero_point<FT, D>();
+  if (v.contains("through")) through = get_point<FT, D>(v["through"], dot(path, "through"));
+  int fixed = 2; // the axis the plane contains (3D)
+  if constexpr (D == 3) fixed = get_coordinate_axis(require(v, "axis", path), dot(path, "axis"));
+  const int i = (fixed + 1) % 3, j = (fixed + 2) % 3; // the plane perpendicular to the axis
+  typename Rigid<FT, D>::Mat a;
+  for (auto& row : a)
+    for (auto& x : row) x = from_rational<FT>(0);
+  const int p = D == 2 ? 0 : i, q = D == 2 ? 1 : j;
+  a[p][p] = c;
+  a[p][q] = s;
+  a[q][p] = s;
+  a[q][q] = -c;
+  if constexpr (D == 3) a[fixed][fixed] = from_rational<FT>(1);
+  return about_center<FT, D>(a, through, path);
+}
+
+template <class FT, int D>
+Rigid<FT, D> parse_reflection(const json& v, const std::string& vp) {
+  expect_object(v, vp,
+                "an object {\"normal\": [...], \"offset\": d} or {\"angle\": {...}, \"through\": "
+                "[...]}");
+  if (v.contains("angle")) return angle_reflection<FT, D>(v, vp);
+  check_keys(v, vp, {"normal", "offset"});
+  const auto n = get_point<FT, D>(require(v, "normal", vp), dot(vp, "normal"));
+  FT d = from_rational<FT>(0);
+  if (v.contains("offset")) d = get_number<FT>(v["offset"], dot(vp, "offset"));
+  return guarded(dot(vp, "normal"), [&] { return Rigid<FT, D>::reflection(n, d); });
+}
+
+template <class FT, int D>
+Rigid<FT, D> parse_transformation(const json& t, const std::string& path, int depth = 0) {
   if (depth > kMaxComposeDepth) fail(path, "transformations are nested too deeply");
   expect_object(t, path, "a transformation object");
   if (t.empty())
@@ -380,14 +952,14 @@ Rigid<D> parse_transformation(const json& t, const std::string& path, int depth 
                  "a " + std::to_string(D) + "x" + std::to_string(D) + " matrix (array of rows)");
     if (m.size() != std::size_t(D))
       fail(mp, "expected " + std::to_string(D) + " rows, got " + std::to_string(m.size()));
-    typename Rigid<D>::Mat a;
+    typename Rigid<FT, D>::Mat a;
     for (int i = 0; i < D; ++i) {
-      const auto row = get_point<D>(m[std::size_t(i)], at(mp, std::size_t(i)), "entries");
+      const auto row = get_point<FT, D>(m[std::size_t(i)], at(mp, std::size_t(i)), "entries");
       for (int j = 0; j < D; ++j) a[i][j] = row[j];
     }
-    core::Point<Exact, D> b = core::zero_point<Exact, D>();
-    if (t.contains("translation")) b = get_point<D>(t["translation"], dot(path, "translation"));
-    return guarded(mp, [&] { return Rigid<D>::from_matrix(a, b); });
+    core::Point<FT, D> b = core::zero_point<FT, D>();
+    if (t.contains("translation")) b = get_point<FT, D>(t["translation"], dot(path, "translation"));
+    return guarded(mp, [&] { return Rigid<FT, D>::from_matrix(a, b); });
   }
   if (t.size() != 1) {
     auto it = t.begin();
@@ -401,33 +973,26 @@ Rigid<D> parse_transformation(const json& t, const std::string& path, int depth 
   const std::string vp = dot(path, kind);
   if (kind == "identity") {
     if (!(v.is_object() && v.empty())) fail(vp, "expected {}, got " + v.dump());
-    return Rigid<D>();
+    return Rigid<FT, D>();
   }
-  if (kind == "translation") return Rigid<D>::translation(get_point<D>(v, vp));
-  if (kind == "reflection") {
-    expect_object(v, vp, "an object {\"normal\": [...], \"offset\": d}");
-    check_keys(v, vp, {"normal", "offset"});
-    const auto n = get_point<D>(require(v, "normal", vp), dot(vp, "normal"));
-    Exact d = 0;
-    if (v.contains("offset")) d = get_exact(v["offset"], dot(vp, "offset"));
-    return guarded(dot(vp, "normal"), [&] { return Rigid<D>::reflection(n, d); });
-  }
-  if (kind == "rotation") return parse_rotation<D>(v, vp);
+  if (kind == "translation") return Rigid<FT, D>::translation(get_point<FT, D>(v, vp));
+  if (kind == "reflection") return parse_reflection<FT, D>(v, vp);
+  if (kind == "rotation") return parse_rotation<FT, D>(v, vp);
   if (kind == "signed_permutation") {
     expect_object(v, vp, "an object {\"perm\": [...], \"sign\": [...], \"translation\": [...]}");
     check_keys(v, vp, {"perm", "sign", "translation"});
     const auto perm = get_int_array<D>(require(v, "perm", vp), dot(vp, "perm"), -1000, 1000);
     const auto sign = get_int_array<D>(require(v, "sign", vp), dot(vp, "sign"), -1000, 1000);
-    core::Point<Exact, D> b = core::zero_point<Exact, D>();
-    if (v.contains("translation")) b = get_point<D>(v["translation"], dot(vp, "translation"));
-    return guarded(vp, [&] { return Rigid<D>::signed_permutation(perm, sign, b); });
+    core::Point<FT, D> b = core::zero_point<FT, D>();
+    if (v.contains("translation")) b = get_point<FT, D>(v["translation"], dot(vp, "translation"));
+    return guarded(vp, [&] { return Rigid<FT, D>::signed_permutation(perm, sign, b); });
   }
   if (kind == "compose") {
     expect_array(v, vp, "a non-empty array of transformations");
     if (v.empty()) fail(vp, "expected at least one transformation");
-    Rigid<D> acc;
+    Rigid<FT, D> acc;
     for (std::size_t k = 0; k < v.size(); ++k)
-      acc = acc * parse_transformation<D>(v[k], at(vp, k), depth + 1);
+      acc = acc * parse_transformation<FT, D>(v[k], at(vp, k), depth + 1);
     return acc;
   }
   fail(path, "unknown transformation " + quote_text(kind) +
@@ -437,27 +1002,35 @@ Rigid<D> parse_transformation(const json& t, const std::string& path, int depth 
 // ---------------------------------------------------------------------------------------------
 // Polygons (2D geometry templates): validation and exact constrained Delaunay triangulation
 
+template <class FT>
 struct Ring {
-  std::string path;                       // e.g. templates[0].polygon or templates[0].holes[1]
-  std::vector<core::Point<Exact, 2>> pts; // implicitly closed
-  std::size_t first = 0;                  // global index of pts[0]
+  std::string path;                    // e.g. templates[0].polygon or templates[0].holes[1]
+  std::vector<core::Point<FT, 2>> pts; // implicitly closed
+  std::size_t first = 0;               // global index of pts[0]
 };
 
-using K = CGAL::Epeck;
-using P2 = K::Point_2;
+/// The CGAL kernel of a number type: Epeck for rationals, plain Cartesian for an exact field.
+template <class FT>
+using KernelOf =
+    std::conditional_t<std::is_same_v<FT, Exact>, CGAL::Epeck, CGAL::Simple_cartesian<FT>>;
+template <class FT>
+using P2 = typename KernelOf<FT>::Point_2;
 
-P2 to_cgal(const core::Point<Exact, 2>& p) {
-  return P2(p[0], p[1]);
+template <class FT>
+P2<FT> to_cgal(const core::Point<FT, 2>& p) {
+  return P2<FT>(p[0], p[1]);
 }
 
+template <class FT>
 struct Edge {
   std::size_t ring, k; // edge from ring.pts[k] to ring.pts[(k+1) % n]
-  P2 a, b;
-  Exact xmin, xmax;
+  P2<FT> a, b;
+  FT xmin, xmax;
 };
 
-std::string edge_name(const std::vector<Ring>& rings, const Edge& e) {
-  const Ring& r = rings[e.ring];
+template <class FT>
+std::string edge_name(const std::vector<Ring<FT>>& rings, const Edge<FT>& e) {
+  const Ring<FT>& r = rings[e.ring];
   const std::string base = r.path.substr(r.path.rfind('.') + 1);
   return base + "[" + std::to_string(e.k) + "]-" + base + "[" +
          std::to_string((e.k + 1) % r.pts.size()) + "]";
@@ -465,8 +1038,10 @@ std::string edge_name(const std::vector<Ring>& rings, const Edge& e) {
 
 /// The rings have pairwise disjoint boundaries except for consecutive edges of one ring, which
 /// share their common vertex only: each ring is a simple polygon and no two rings touch.
-void check_simple_and_disjoint(const std::vector<Ring>& rings) {
-  std::vector<Edge> edges;
+template <class FT>
+void check_simple_and_disjoint(const std::vector<Ring<FT>>& rings) {
+  using K = KernelOf<FT>;
+  std::vector<Edge<FT>> edges;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const auto& pts = rings[r].pts;
     for (std::size_t k = 0; k < pts.size(); ++k) {
@@ -476,11 +1051,11 @@ void check_simple_and_disjoint(const std::vector<Ring>& rings) {
     }
   }
   std::sort(edges.begin(), edges.end(),
-            [](const Edge& x, const Edge& y) { return x.xmin < y.xmin; });
+            [](const Edge<FT>& x, const Edge<FT>& y) { return x.xmin < y.xmin; });
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t j = i + 1; j < edges.size() && !(edges[i].xmax < edges[j].xmin); ++j) {
-      const Edge& e = edges[i];
-      const Edge& f = edges[j];
+      const Edge<FT>& e = edges[i];
+      const Edge<FT>& f = edges[j];
       const std::size_t n = rings[e.ring].pts.size();
       const bool same_ring = e.ring == f.ring;
       const bool e_then_f = same_ring && (e.k + 1) % n == f.k;
@@ -489,17 +1064,17 @@ void check_simple_and_disjoint(const std::vector<Ring>& rings) {
       if (e_then_f || f_then_e) {
         // Consecutive edges u-v, v-w: they overlap beyond v iff u, v, w are collinear and u, w
         // lie on the same side of v.
-        const P2& u = e_then_f ? e.a : f.a;
-        const P2& v = e_then_f ? e.b : f.b;
-        const P2& w = e_then_f ? f.b : e.b;
+        const P2<FT>& u = e_then_f ? e.a : f.a;
+        const P2<FT>& v = e_then_f ? e.b : f.b;
+        const P2<FT>& w = e_then_f ? f.b : e.b;
         bad = CGAL::collinear(u, v, w) && CGAL::angle(u, v, w) == CGAL::ACUTE;
         if (n == 3 && !bad) bad = CGAL::collinear(u, v, w);
       } else {
-        bad = CGAL::do_intersect(K::Segment_2(e.a, e.b), K::Segment_2(f.a, f.b));
+        bad = CGAL::do_intersect(typename K::Segment_2(e.a, e.b), typename K::Segment_2(f.a, f.b));
       }
       if (bad) {
-        const Edge& later = e.ring < f.ring ? f : e;
-        const Edge& earlier = e.ring < f.ring ? e : f;
+        const Edge<FT>& later = e.ring < f.ring ? f : e;
+        const Edge<FT>& earlier = e.ring < f.ring ? e : f;
         const std::string what = same_ring ? "the polygon is self-intersecting: edge "
                                            : "the boundaries of the domain touch or cross: edge ";
         fail(rings[later.ring].path,
@@ -512,23 +1087,26 @@ struct FaceInfo {
   int nesting = -1;
   bool in_domain() const { return nesting % 2 == 1; }
 };
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
-using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
-using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT =
-    CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
+template <class K>
+using CdtOf = CGAL::Constrained_Delaunay_triangulation_2<
+    K,
+    CGAL::Triangulation_data_structure_2<
+        CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>,
+        CGAL::Constrained_triangulation_face_base_2<
+            K, CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>>>,
+    CGAL::No_constraint_intersection_tag>;
 
 /// Nesting level of every face: the number of constraint crossings on a path from the infinite
 /// face. Flood-fills each level without crossing constraints; crossings seed the next level.
+template <class CDT>
 void mark_nesting(CDT& cdt) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info().nesting = -1;
-  std::deque<std::pair<CDT::Face_handle, int>> seeds{{cdt.infinite_face(), 0}};
+  std::deque<std::pair<typename CDT::Face_handle, int>> seeds{{cdt.infinite_face(), 0}};
   while (!seeds.empty()) {
     auto [start, level] = seeds.front();
     seeds.pop_front();
     if (start->info().nesting != -1) continue;
-    std::vector<CDT::Face_handle> stack{start};
+    std::vector<typename CDT::Face_handle> stack{start};
     start->info().nesting = level;
     while (!stack.empty()) {
       auto f = stack.back();
@@ -536,7 +1114,7 @@ void mark_nesting(CDT& cdt) {
       for (int i = 0; i < 3; ++i) {
         auto n = f->neighbor(i);
         if (n->info().nesting != -1) continue;
-        if (cdt.is_constrained(CDT::Edge(f, i))) {
+        if (cdt.is_constrained(typename CDT::Edge(f, i))) {
           seeds.emplace_back(n, level + 1);
         } else {
           n->info().nesting = level;
@@ -548,15 +1126,18 @@ void mark_nesting(CDT& cdt) {
 }
 
 /// Validates outer polygon + holes and triangulates the domain they bound.
-core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::string& tpath) {
-  std::vector<Ring> rings;
+template <class FT>
+core::ElementComplex<FT, 2> triangulate_polygon(const json& tj, const std::string& tpath) {
+  using K = KernelOf<FT>;
+  using CDT = CdtOf<K>;
+  std::vector<Ring<FT>> rings;
   auto read_ring = [&](const json& j, const std::string& path) {
     expect_array(j, path, "an array of [x, y] vertices");
     if (j.size() < 3)
       fail(path, "a polygon needs at least 3 vertices, got " + std::to_string(j.size()));
-    Ring r;
+    Ring<FT> r;
     r.path = path;
-    for (std::size_t k = 0; k < j.size(); ++k) r.pts.push_back(get_point<2>(j[k], at(path, k)));
+    for (std::size_t k = 0; k < j.size(); ++k) r.pts.push_back(get_point<FT, 2>(j[k], at(path, k)));
     rings.push_back(std::move(r));
   };
   read_ring(tj["polygon"], dot(tpath, "polygon"));
@@ -567,7 +1148,7 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
     for (std::size_t k = 0; k < h.size(); ++k) read_ring(h[k], at(hp, k));
   }
   // Repeated vertices (within a ring, e.g. a closing copy of the first vertex, or across rings).
-  std::map<core::Point<Exact, 2>, std::string, core::PointLess<Exact, 2>> seen;
+  std::map<core::Point<FT, 2>, std::string, core::PointLess<FT, 2>> seen;
   std::size_t count = 0;
   for (auto& r : rings) {
     r.first = count;
@@ -582,14 +1163,14 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
   }
   check_simple_and_disjoint(rings);
   // With disjoint simple boundaries, nesting is decided by one vertex per ring.
-  std::vector<std::vector<P2>> polys;
+  std::vector<std::vector<P2<FT>>> polys;
   for (const auto& r : rings) {
-    std::vector<P2> p;
+    std::vector<P2<FT>> p;
     for (const auto& q : r.pts) p.push_back(to_cgal(q));
     polys.push_back(std::move(p));
   }
   for (std::size_t h = 1; h < rings.size(); ++h) {
-    const P2& v = polys[h][0];
+    const P2<FT>& v = polys[h][0];
     if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), v, K()) != CGAL::ON_BOUNDED_SIDE)
       fail(rings[h].path, "the hole is not inside the polygon");
     for (std::size_t o = 1; o < rings.size(); ++o)
@@ -600,7 +1181,7 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
   }
 
   CDT cdt;
-  std::vector<CDT::Vertex_handle> vh(count);
+  std::vector<typename CDT::Vertex_handle> vh(count);
   try {
     for (const auto& r : rings)
       for (std::size_t k = 0; k < r.pts.size(); ++k) {
@@ -610,12 +1191,12 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
     for (const auto& r : rings)
       for (std::size_t k = 0; k < r.pts.size(); ++k)
         cdt.insert_constraint(vh[r.first + k], vh[r.first + (k + 1) % r.pts.size()]);
-  } catch (const CDT::Intersection_of_constraints_exception&) {
+  } catch (const typename CDT::Intersection_of_constraints_exception&) {
     fail(dot(tpath, "polygon"), "the polygon boundaries intersect");
   }
   mark_nesting(cdt);
 
-  core::ElementComplex<Exact, 2> m;
+  core::ElementComplex<FT, 2> m;
   for (const auto& r : rings)
     for (const auto& p : r.pts) m.points.push_back(p);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
@@ -631,8 +1212,8 @@ core::ElementComplex<Exact, 2> triangulate_polygon(const json& tj, const std::st
 // Templates
 
 /// vertices + cells, with the shape checks of spec/input-format.md.
-template <int D>
-core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpath) {
+template <class FT, int D>
+core::ElementComplex<FT, D> read_cells(const json& tj, const std::string& tpath) {
   const std::string vp = dot(tpath, "vertices");
   const std::string cp = dot(tpath, "cells");
   const json& vj = require(tj, "vertices", tpath);
@@ -641,10 +1222,10 @@ core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpa
   expect_array(cj, cp, "an array of cells");
   if (vj.empty()) fail(vp, "no vertices (a template must not be empty)");
   if (cj.empty()) fail(cp, "no cells (a template must not be empty)");
-  core::ElementComplex<Exact, D> m;
-  std::map<core::Point<Exact, D>, std::size_t, core::PointLess<Exact, D>> seen;
+  core::ElementComplex<FT, D> m;
+  std::map<core::Point<FT, D>, std::size_t, core::PointLess<FT, D>> seen;
   for (std::size_t k = 0; k < vj.size(); ++k) {
-    m.points.push_back(get_point<D>(vj[k], at(vp, k)));
+    m.points.push_back(get_point<FT, D>(vj[k], at(vp, k)));
     auto [it, inserted] = seen.emplace(m.points.back(), k);
     if (!inserted)
       fail(at(vp, k),
@@ -678,7 +1259,7 @@ core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpa
       used[ids[k]] = true;
     }
     const core::Simplex s = core::Simplex::from_range(ids.data(), ids.data() + D + 1);
-    if (!core::affinely_independent<Exact, D>(m.coords(s)))
+    if (!core::affinely_independent<FT, D>(m.coords(s)))
       fail(path, std::string("degenerate cell: its vertices are affinely dependent (zero ") +
                      (D == 2 ? "area" : "volume") + ")");
     auto [it, inserted] = cells.emplace(s, c);
@@ -690,21 +1271,21 @@ core::ElementComplex<Exact, D> read_cells(const json& tj, const std::string& tpa
   return m;
 }
 
-template <int D>
-std::vector<core::InstanceSpec<Exact, D>> read_instances(const json& tj, const std::string& tpath) {
+template <class FT, int D>
+std::vector<core::InstanceSpec<FT, D>> read_instances(const json& tj, const std::string& tpath) {
   const std::string ip = dot(tpath, "instances");
   const json& ij = require(tj, "instances", tpath);
   expect_array(ij, ip, "an array of instances");
   if (ij.empty()) fail(ip, "no instances (every template needs at least one)");
-  std::vector<core::InstanceSpec<Exact, D>> out;
+  std::vector<core::InstanceSpec<FT, D>> out;
   for (std::size_t g = 0; g < ij.size(); ++g) {
     const std::string gp = at(ip, g);
     const json& inst = ij[g];
     expect_object(inst, gp, "an instance object {\"transformation\": ..., \"region\": ...}");
     check_keys(inst, gp, {"transformation", "region"});
-    core::InstanceSpec<Exact, D> spec;
+    core::InstanceSpec<FT, D> spec;
     spec.transformation =
-        parse_transformation<D>(require(inst, "transformation", gp), dot(gp, "transformation"));
+        parse_transformation<FT, D>(require(inst, "transformation", gp), dot(gp, "transformation"));
     if (inst.contains("region"))
       spec.region =
           int(get_integer(inst["region"], dot(gp, "region"), std::numeric_limits<int>::min(),
@@ -714,16 +1295,16 @@ std::vector<core::InstanceSpec<Exact, D>> read_instances(const json& tj, const s
   return out;
 }
 
-template <int D>
-core::TemplatedStructure<Exact, D> read_structure(const json& root) {
-  core::TemplatedStructure<Exact, D> x;
+template <class FT, int D>
+core::TemplatedStructure<FT, D> read_structure(const json& root) {
+  core::TemplatedStructure<FT, D> x;
   const json& ts = root["templates"];
   for (std::size_t i = 0; i < ts.size(); ++i) {
     const std::string tp = at("templates", i);
     const json& tj = ts[i];
     expect_object(tj, tp, "a template object");
     check_keys(tj, tp, {"name", "kind", "vertices", "cells", "polygon", "holes", "instances"});
-    core::Template<Exact, D> t;
+    core::Template<FT, D> t;
     t.name =
         tj.contains("name") ? get_string(tj["name"], dot(tp, "name")) : "X" + std::to_string(i + 1);
     if (tj.contains("kind")) {
@@ -751,17 +1332,17 @@ core::TemplatedStructure<Exact, D> read_structure(const json& root) {
                std::string(
                    "give either \"polygon\" or \"vertices\" and \"cells\", not both (found \"") +
                    k + "\")");
-      if constexpr (D == 2) t.mesh = triangulate_polygon(tj, tp);
+      if constexpr (D == 2) t.mesh = triangulate_polygon<FT>(tj, tp);
     } else {
       if (!tj.contains("vertices") && !tj.contains("cells"))
         fail(tp, std::string("missing fields \"vertices\" and \"cells\"") +
                      (D == 2 && t.kind == core::TemplateKind::geometry ? " (or \"polygon\")" : ""));
-      t.mesh = read_cells<D>(tj, tp);
+      t.mesh = read_cells<FT, D>(tj, tp);
     }
     t.mesh = core::face_completion(t.mesh);
     t.mesh.normalize();
     x.templates.push_back(std::move(t));
-    x.instances.push_back(read_instances<D>(tj, tp));
+    x.instances.push_back(read_instances<FT, D>(tj, tp));
   }
   return x;
 }
@@ -819,10 +1400,10 @@ std::string pretty(const ojson& j) {
   return out + "\n";
 }
 
-template <int D>
-ojson point_json(const core::Point<Exact, D>& p) {
+template <class FT, int D>
+ojson point_json(const core::Point<FT, D>& p) {
   ojson a = ojson::array();
-  for (int d = 0; d < D; ++d) a.push_back(exact_to_string(p[d]));
+  for (int d = 0; d < D; ++d) a.push_back(number_text(p[d]));
   return a;
 }
 
@@ -832,22 +1413,22 @@ ojson simplex_json(const core::Simplex& s) {
   return a;
 }
 
-template <int D>
-ojson transformation_json(const Rigid<D>& t) {
+template <class FT, int D>
+ojson transformation_json(const Rigid<FT, D>& t) {
   ojson m = ojson::array();
   for (int i = 0; i < D; ++i) {
     ojson row = ojson::array();
-    for (int j = 0; j < D; ++j) row.push_back(exact_to_string(t.matrix()[i][j]));
+    for (int j = 0; j < D; ++j) row.push_back(number_text(t.matrix()[i][j]));
     m.push_back(row);
   }
   ojson o = ojson::object();
   o["matrix"] = m;
-  o["translation"] = point_json<D>(t.translation_part());
+  o["translation"] = point_json<FT, D>(t.translation_part());
   return o;
 }
 
-template <int D>
-std::string structure_to_json(const core::TemplatedStructure<Exact, D>& x) {
+template <class FT, int D>
+std::string structure_to_json(const core::TemplatedStructure<FT, D>& x) {
   ojson root = ojson::object();
   root["symmesh"] = kFormat;
   root["dimension"] = D;
@@ -858,7 +1439,7 @@ std::string structure_to_json(const core::TemplatedStructure<Exact, D>& x) {
     tj["name"] = t.name;
     tj["kind"] = t.kind == core::TemplateKind::mesh ? "mesh" : "geometry";
     ojson vs = ojson::array();
-    for (const auto& p : t.mesh.points) vs.push_back(point_json<D>(p));
+    for (const auto& p : t.mesh.points) vs.push_back(point_json<FT, D>(p));
     tj["vertices"] = vs;
     ojson cs = ojson::array();
     for (const auto& e : t.mesh.elements)
@@ -868,7 +1449,7 @@ std::string structure_to_json(const core::TemplatedStructure<Exact, D>& x) {
     if (i < x.instances.size())
       for (const auto& spec : x.instances[i]) {
         ojson ij = ojson::object();
-        ij["transformation"] = transformation_json<D>(spec.transformation);
+        ij["transformation"] = transformation_json<FT, D>(spec.transformation);
         ij["region"] = spec.region;
         is.push_back(ij);
       }
@@ -879,12 +1460,12 @@ std::string structure_to_json(const core::TemplatedStructure<Exact, D>& x) {
   return pretty(root);
 }
 
-template <int D>
-std::string element_complex_to_json(const core::ElementComplex<Exact, D>& m) {
+template <class FT, int D>
+std::string element_complex_to_json(const core::ElementComplex<FT, D>& m) {
   ojson root = ojson::object();
   root["dimension"] = D;
   ojson vs = ojson::array();
-  for (const auto& p : m.points) vs.push_back(point_json<D>(p));
+  for (const auto& p : m.points) vs.push_back(point_json<FT, D>(p));
   root["vertices"] = vs;
   ojson es = ojson::array();
   for (const auto& e : m.elements) es.push_back(simplex_json(e));
@@ -898,84 +1479,12 @@ std::string element_complex_to_json(const core::ElementComplex<Exact, D>& m) {
 // Public API
 
 Exact parse_exact(const std::string& text, const std::string& field) {
-  if (text.empty()) fail(field, "empty string is not a number");
-  if (text.size() > kMaxNumberLength)
-    fail(field, "number has more than " + std::to_string(kMaxNumberLength) + " characters");
-  {
-    std::string l = lower(text);
-    if (!l.empty() && (l[0] == '+' || l[0] == '-')) l.erase(0, 1);
-    if (l == "nan" || l == "inf" || l == "infinity")
-      fail(field, quote_text(text) + " is not allowed: NaN and infinities are not exact numbers");
-  }
-  const std::string bad = quote_text(text) +
-                          " is not an exact number (expected \"n\", \"n/d\" or a decimal such as "
-                          "\"-0.25\" or \"1.5e-3\")";
-  std::size_t i = 0;
-  bool negative = false;
-  if (text[0] == '+' || text[0] == '-') {
-    negative = text[0] == '-';
-    i = 1;
-  }
-  const std::string body = text.substr(i);
-  if (const auto slash = body.find('/'); slash != std::string::npos) {
-    const std::string num = body.substr(0, slash);
-    const std::string den = body.substr(slash + 1);
-    if (!all_digits(num) || !all_digits(den)) fail(field, bad);
-    if (strip_zeros(den) == "0") fail(field, quote_text(text) + " has a zero denominator");
-    return Exact(make_rational(negative, num, den));
-  }
-  {
-    // decimal := (digits ["." [digits]] | "." digits) [("e"|"E") [sign] digits]
-    std::string mantissa = body, exponent;
-    if (const auto e = body.find_first_of("eE"); e != std::string::npos) {
-      mantissa = body.substr(0, e);
-      exponent = body.substr(e + 1);
-      if (exponent.empty()) fail(field, bad);
-    }
-    std::string int_part = mantissa, frac_part;
-    if (const auto p = mantissa.find('.'); p != std::string::npos) {
-      int_part = mantissa.substr(0, p);
-      frac_part = mantissa.substr(p + 1);
-      if (int_part.empty() && frac_part.empty()) fail(field, bad);
-      if (!int_part.empty() && !all_digits(int_part)) fail(field, bad);
-      if (!frac_part.empty() && !all_digits(frac_part)) fail(field, bad);
-    } else if (!all_digits(int_part)) {
-      fail(field, bad);
-    }
-    long e10 = 0;
-    if (!exponent.empty()) {
-      bool eneg = false;
-      std::string ed = exponent;
-      if (ed[0] == '+' || ed[0] == '-') {
-        eneg = ed[0] == '-';
-        ed.erase(0, 1);
-      }
-      if (!all_digits(ed)) fail(field, bad);
-      const auto nz = ed.find_first_not_of('0');
-      ed = nz == std::string::npos ? "0" : ed.substr(nz);
-      if (ed.size() > 6 || std::stol(ed) > kMaxExponent)
-        fail(field, "the exponent of " + quote_text(text) + " is out of range (at most " +
-                        std::to_string(kMaxExponent) + ")");
-      e10 = eneg ? -std::stol(ed) : std::stol(ed);
-    }
-    e10 -= long(frac_part.size());
-    const std::string digits = int_part + frac_part;
-    if (e10 >= 0)
-      return Exact(make_rational(negative, digits + std::string(std::size_t(e10), '0'), "1"));
-    return Exact(make_rational(negative, digits, "1" + std::string(std::size_t(-e10), '0')));
-  }
+  return to_exact(parse_rational(text, field));
 }
 
 std::string exact_to_string(const Exact& x) {
-  // Exact values are kept in canonical form (lowest terms, positive denominator); mpq_get_str
-  // prints "n" when the denominator is 1.
-  const Rational& q = CGAL::exact(x);
-  std::string out(mpz_sizeinbase(mpq_numref(raw_mpq(q)), 10) +
-                      mpz_sizeinbase(mpq_denref(raw_mpq(q)), 10) + 3,
-                  '\0');
-  mpq_get_str(out.data(), 10, raw_mpq(q));
-  out.resize(std::char_traits<char>::length(out.c_str()));
-  return out;
+  // Exact values are kept in canonical form (lowest terms, positive denominator).
+  return rational_text(raw_mpq(CGAL::exact(x)));
 }
 
 AnyStructure parse_templated_structure(const std::string& text, const std::string& source) {
@@ -997,8 +1506,14 @@ AnyStructure parse_templated_structure(const std::string& text, const std::strin
     const json& ts = require(root, "templates", source);
     expect_array(ts, "templates", "an array of templates");
     if (ts.empty()) fail("templates", "no templates");
-    if (dim == 2) return read_structure<2>(root);
-    return read_structure<3>(root);
+    number::CyclotomicFieldPtr field = choose_field(root);
+    if (!field) {
+      if (dim == 2) return read_structure<Exact, 2>(root);
+      return read_structure<Exact, 3>(root);
+    }
+    FieldScope scope(field);
+    if (dim == 2) return read_structure<Cyclotomic, 2>(root);
+    return read_structure<Cyclotomic, 3>(root);
   } catch (const InputError&) {
     throw;
   } catch (const json::exception& e) {
@@ -1022,17 +1537,63 @@ AnyStructure read_templated_structure(const std::string& path) {
 }
 
 std::string to_json(const Structure2& x) {
-  return structure_to_json<2>(x);
+  return structure_to_json<Exact, 2>(x);
 }
 std::string to_json(const Structure3& x) {
-  return structure_to_json<3>(x);
+  return structure_to_json<Exact, 3>(x);
+}
+std::string to_json(const CyclotomicStructure2& x) {
+  return structure_to_json<Cyclotomic, 2>(x);
+}
+std::string to_json(const CyclotomicStructure3& x) {
+  return structure_to_json<Cyclotomic, 3>(x);
 }
 
 std::string complex_to_json(const core::ElementComplex<Exact, 2>& m) {
-  return element_complex_to_json<2>(m);
+  return element_complex_to_json<Exact, 2>(m);
 }
 std::string complex_to_json(const core::ElementComplex<Exact, 3>& m) {
-  return element_complex_to_json<3>(m);
+  return element_complex_to_json<Exact, 3>(m);
+}
+
+namespace {
+/// The field of a K_m structure: that of its first number in a field (the reader puts every
+/// number in the field; a structure built in code may hold rationals only).
+template <int D>
+number::CyclotomicFieldPtr field_of(const core::TemplatedStructure<Cyclotomic, D>& x) {
+  for (const auto& t : x.templates)
+    for (const auto& p : t.mesh.points)
+      for (const auto& c : p)
+        if (c.field()) return c.field();
+  for (const auto& specs : x.instances)
+    for (const auto& spec : specs)
+      for (const auto& row : spec.transformation.matrix())
+        for (const auto& a : row)
+          if (a.field()) return a.field();
+  return nullptr;
+}
+} // namespace
+
+int field_order(const AnyStructure& x) {
+  return std::visit(
+      [](const auto& s) -> int {
+        if constexpr (requires { field_of(s); }) {
+          const auto f = field_of(s);
+          return f ? f->m() : 0;
+        } else {
+          return 0;
+        }
+      },
+      x);
+}
+
+std::string kernel_name(const AnyStructure& x) {
+  if (std::holds_alternative<Structure2>(x) || std::holds_alternative<Structure3>(x))
+    return "rational (CGAL Epeck, exact)";
+  const int m = field_order(x);
+  if (m == 0) return "K_m (exact real cyclotomic field; all numbers rational)";
+  return "K_" + std::to_string(m) + " = Q(cos 2pi/" + std::to_string(m) +
+         ") (exact real cyclotomic field)";
 }
 
 } // namespace symmesh::io

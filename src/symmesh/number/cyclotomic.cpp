@@ -4,6 +4,7 @@
 #include <mpfr.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <ostream>
@@ -72,6 +73,26 @@ void to_common(const std::vector<mpq_class>& v, std::vector<mpz_class>& num, mpz
       num[i] *= v[i].get_num();
     }
   }
+}
+
+/// Numerators below 2^31 in magnitude: products and sums of up to 256 of them fit an __int128
+/// with room for a reduction factor below 2^40 (see multiply_small).
+constexpr std::size_t kSmallBits = 31;
+constexpr std::size_t kSmallReductionBits = 40;
+
+bool fits_small(const std::vector<mpz_class>& v) {
+  return std::all_of(v.begin(), v.end(), [](const mpz_class& x) {
+    return mpz_sizeinbase(x.get_mpz_t(), 2) <= kSmallBits;
+  });
+}
+
+mpz_class from_int128(__int128 v) {
+  const bool negative = v < 0;
+  unsigned __int128 u = negative ? -static_cast<unsigned __int128>(v) : v;
+  mpz_class r(static_cast<unsigned long>(static_cast<unsigned long long>(u >> 64)));
+  r <<= 64;
+  r += mpz_class(static_cast<unsigned long>(static_cast<unsigned long long>(u)));
+  return negative ? mpz_class(-r) : r;
 }
 
 /// RAII MPFR interval [lo, hi].
@@ -233,6 +254,19 @@ CyclotomicField::CyclotomicField(Private, int m, QPolynomial minimal_polynomial)
     }
     reduction_num_.push_back(std::move(num));
   }
+  small_reduction_ =
+      d_ <= 256 && mpz_sizeinbase(reduction_den_.get_mpz_t(), 2) <= kSmallReductionBits;
+  for (const auto& row : reduction_num_) {
+    std::vector<long long> small;
+    for (const auto& x : row) {
+      small_reduction_ =
+          small_reduction_ && mpz_sizeinbase(x.get_mpz_t(), 2) <= kSmallReductionBits;
+      small.push_back(small_reduction_ ? x.get_si() : 0);
+    }
+    reduction_small_.push_back(std::move(small));
+  }
+  const auto pw = powers(start_precision);
+  for (const auto& p : pw->c_pow) c_pow_double_.push_back(mpfr_get_d(p->lo, MPFR_RNDN));
 }
 
 CyclotomicField::~CyclotomicField() = default;
@@ -308,12 +342,51 @@ Cyclotomic CyclotomicField::sin_2pi(long k, long n) const {
   return two_cos_2pi_over_m(j) / Cyclotomic(2);
 }
 
+std::vector<mpq_class> CyclotomicField::multiply_small(const std::vector<mpz_class>& an,
+                                                       const mpz_class& ad,
+                                                       const std::vector<mpz_class>& bn,
+                                                       const mpz_class& bd) const {
+  // The same computation as the general path of multiply, on machine integers: |an|, |bn| <
+  // 2^31, so each product sum is below 2^70, and each reduced coefficient below
+  // 2^70 · 2^40 · 2d < 2^119 (d <= 256).
+  std::vector<long long> x(d_), y(d_);
+  for (int i = 0; i < d_; ++i) {
+    x[std::size_t(i)] = an[std::size_t(i)].get_si();
+    y[std::size_t(i)] = bn[std::size_t(i)].get_si();
+  }
+  std::vector<__int128> p(std::size_t(2 * d_ - 1), 0);
+  for (int i = 0; i < d_; ++i) {
+    if (x[std::size_t(i)] == 0) continue;
+    for (int j = 0; j < d_; ++j)
+      p[std::size_t(i + j)] += static_cast<__int128>(x[std::size_t(i)]) * y[std::size_t(j)];
+  }
+  const long long rd = reduction_den_.get_si();
+  std::vector<__int128> r(static_cast<std::size_t>(d_));
+  for (int i = 0; i < d_; ++i) r[std::size_t(i)] = p[std::size_t(i)] * rd;
+  for (int j = 0; j + 1 < d_; ++j) {
+    const __int128 top = p[std::size_t(d_ + j)];
+    if (top == 0) continue;
+    const auto& row = reduction_small_[std::size_t(j)];
+    for (int i = 0; i < d_; ++i) r[std::size_t(i)] += top * row[std::size_t(i)];
+  }
+  mpz_class den = ad * bd;
+  if (rd != 1) den *= reduction_den_;
+  std::vector<mpq_class> out(static_cast<std::size_t>(d_));
+  for (int i = 0; i < d_; ++i) {
+    if (r[std::size_t(i)] == 0) continue;
+    out[std::size_t(i)] = mpq_class(from_int128(r[std::size_t(i)]), den);
+    out[std::size_t(i)].canonicalize();
+  }
+  return out;
+}
+
 std::vector<mpq_class> CyclotomicField::multiply(const std::vector<mpq_class>& a,
                                                  const std::vector<mpq_class>& b) const {
   std::vector<mpz_class> an, bn;
   mpz_class ad, bd;
   to_common(a, an, ad);
   to_common(b, bn, bd);
+  if (small_reduction_ && fits_small(an) && fits_small(bn)) return multiply_small(an, ad, bn, bd);
   std::vector<mpz_class> p(2 * d_ - 1);
   for (int i = 0; i < d_; ++i) {
     if (an[i] == 0) continue;
@@ -448,8 +521,51 @@ bool only_constant(const std::vector<mpq_class>& a) {
 
 } // namespace
 
+int CyclotomicField::filtered_sign(const std::vector<mpq_class>& a) const {
+  // Each |â_i − a_i| <= 2u|a_i| (mpq_get_d truncates), |ĉ^i − c^i| <= 1.01u|c^i|, and d products
+  // and sums add at most (d + 2)u relative to Σ|a_i c^i| (u = 2^-53, no underflow or overflow:
+  // the range test below). The bound (4d + 16)u·Σ|â_i ĉ^i| covers that with a wide margin.
+  double sum = 0, magnitude = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i] == 0) continue;
+    const double x = a[i].get_d();
+    if (!(std::fabs(x) > 1e-250 && std::fabs(x) < 1e250)) return 0;
+    const double t = x * c_pow_double_[i];
+    sum += t;
+    magnitude += std::fabs(t);
+  }
+  const double bound = magnitude * (4.0 * d_ + 16.0) * 0x1p-53;
+  if (sum > bound) return 1;
+  if (sum < -bound) return -1;
+  return 0;
+}
+
+int CyclotomicField::filtered_sign_of_difference(const std::vector<mpq_class>& a,
+                                                 const std::vector<mpq_class>& b) const {
+  // As filtered_sign, for Σ (a_i − b_i) c^i without forming a − b: each of the 2d products
+  // carries the error bound of filtered_sign, and the 2d-term sum at most (2d + 2)u more.
+  if (&a == &b) return 0; // shared storage (copy-on-write copies): equal
+  double sum = 0, magnitude = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (const int side : {1, -1}) {
+      const mpq_class& q = side > 0 ? a[i] : b[i];
+      if (q == 0) continue;
+      const double x = q.get_d();
+      if (!(std::fabs(x) > 1e-250 && std::fabs(x) < 1e250)) return 0;
+      const double t = x * c_pow_double_[i];
+      sum += side * t;
+      magnitude += std::fabs(t);
+    }
+  }
+  const double bound = magnitude * (8.0 * d_ + 16.0) * 0x1p-53;
+  if (sum > bound) return 1;
+  if (sum < -bound) return -1;
+  return 0;
+}
+
 int CyclotomicField::sign(const std::vector<mpq_class>& a) const {
   if (only_constant(a)) return sgn(a[0]);
+  if (const int s = filtered_sign(a)) return s;
   // a ≠ 0 and 1, c, ..., c^{d-1} are linearly independent over Q (for the true minimal
   // polynomial), so the value is non-zero and the enclosures shrink onto it.
   for (long prec = start_precision; prec <= max_precision_bits; prec *= 2) {
@@ -489,6 +605,7 @@ double CyclotomicField::to_double(const std::vector<mpq_class>& a) const {
 
 Cyclotomic::Cyclotomic(CyclotomicFieldPtr field, std::vector<mpq_class> coefficients)
     : field_(std::move(field)), coefficients_(std::move(coefficients)) {
+  for (auto& x : coefficients_) x.canonicalize(); // == compares coefficients
   if (!field_) {
     if (coefficients_.size() > 1 && !only_constant(coefficients_))
       throw std::invalid_argument("Cyclotomic: a rational needs one coefficient");
@@ -582,21 +699,38 @@ Cyclotomic& Cyclotomic::operator+=(const Cyclotomic& o) {
 }
 
 Cyclotomic& Cyclotomic::operator-=(const Cyclotomic& o) {
-  return *this += -o;
+  auto f = common_field(*this, o);
+  if (!field_ && f) {
+    coefficients_ = coefficients_in(f);
+    field_ = f;
+  }
+  if (o.field_ || !f) {
+    for (std::size_t i = 0; i < coefficients_.size(); ++i) coefficients_[i] -= o.coefficients_[i];
+  } else {
+    coefficients_[0] -= o.coefficients_[0];
+  }
+  return *this;
 }
 
 Cyclotomic& Cyclotomic::operator*=(const Cyclotomic& o) {
   auto f = common_field(*this, o);
   if (!f) {
     coefficients_[0] *= o.coefficients_[0];
-  } else if (!o.field_ || !field_) {
-    // one side is a rational scalar
-    const mpq_class s = o.field_ ? coefficients_[0] : o.coefficients_[0];
-    if (!field_) {
-      coefficients_ = o.coefficients_;
-      field_ = f;
+  } else if (!o.field_ || !field_ || o.is_rational() || is_rational()) {
+    // One side is a rational scalar (rotation matrices and translations are full of 0, ±1 and
+    // ±1/2): d rational products instead of a polynomial product and its reduction.
+    const bool scalar_is_o = !o.field_ || o.is_rational();
+    const mpq_class s = scalar_is_o ? o.coefficients_[0] : coefficients_[0];
+    if (!scalar_is_o)
+      coefficients_ = o.coefficients_; // this is the scalar, s keeps its value
+    else if (!field_)
+      coefficients_ = coefficients_in(f);
+    field_ = f;
+    if (s == 0) {
+      coefficients_ = CoefficientVector(std::size_t(f->degree()));
+    } else if (s != 1) {
+      for (auto& x : coefficients_) x *= s;
     }
-    for (auto& x : coefficients_) x *= s;
   } else {
     coefficients_ = f->multiply(coefficients_, o.coefficients_);
   }
@@ -629,6 +763,11 @@ bool operator==(const Cyclotomic& a, const Cyclotomic& b) {
 }
 
 int compare(const Cyclotomic& a, const Cyclotomic& b) {
+  if (a.is_rational() && b.is_rational()) return sgn(a.coefficients_[0] - b.coefficients_[0]);
+  const auto f = Cyclotomic::common_field(a, b);
+  if (a.field_ && b.field_) {
+    if (const int s = f->filtered_sign_of_difference(a.coefficients_, b.coefficients_)) return s;
+  }
   return (a - b).sign();
 }
 

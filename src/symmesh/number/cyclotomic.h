@@ -10,6 +10,7 @@
 
 #include <gmpxx.h>
 
+#include <initializer_list>
 #include <iosfwd>
 #include <memory>
 #include <mutex>
@@ -81,6 +82,11 @@ public:
   /// Throws std::domain_error for 0; std::logic_error when the (test-hooked) minimal polynomial
   /// shares a factor with a, i.e. is not irreducible.
   std::vector<mpq_class> inverse(const std::vector<mpq_class>& a) const;
+  /// Sign by a double evaluation with a rigorous error bound; 0 when that bound does not decide.
+  int filtered_sign(const std::vector<mpq_class>& a) const;
+  /// filtered_sign of a − b (same degree), without forming a − b.
+  int filtered_sign_of_difference(const std::vector<mpq_class>& a,
+                                  const std::vector<mpq_class>& b) const;
   /// Certified sign of Σ a_i c^i.
   int sign(const std::vector<mpq_class>& a) const;
   /// Interval [lo, hi] of doubles containing the value; excludes 0 for non-zero elements (unless
@@ -97,6 +103,10 @@ private:
   std::shared_ptr<const Powers> powers(long precision) const;
   const std::vector<mpq_class>& two_cos_cached(long j) const;
   std::vector<mpq_class> times_c(const std::vector<mpq_class>& v) const;
+  /// multiply on machine integers, for numerators below 2^31 and a small reduction table.
+  std::vector<mpq_class> multiply_small(const std::vector<mpz_class>& an, const mpz_class& ad,
+                                        const std::vector<mpz_class>& bn,
+                                        const mpz_class& bd) const;
 
   int m_;
   int d_;
@@ -107,6 +117,42 @@ private:
   mutable std::mutex mutex_;
   mutable std::vector<std::shared_ptr<const Powers>> powers_;
   mutable std::vector<std::vector<mpq_class>> two_cos_; // 2cos(2πj/m), j = 0..
+  std::vector<double> c_pow_double_;                    // c^i to nearest double, for filtered_sign
+  bool small_reduction_ = false; // reduction table entries and denominator below 2^40
+  std::vector<std::vector<long long>> reduction_small_;
+};
+
+/// Copy-on-write coefficient storage: copies of an element share one vector (the core copies
+/// points and matrices freely, and a copy of d rationals costs 2d allocations), and the first
+/// write through a shared copy unshares it. Not for concurrent writers.
+class CoefficientVector {
+public:
+  explicit CoefficientVector(std::size_t n = 0) : p_(std::make_shared<std::vector<mpq_class>>(n)) {}
+  CoefficientVector(std::initializer_list<mpq_class> values)
+      : p_(std::make_shared<std::vector<mpq_class>>(values)) {}
+  CoefficientVector(std::vector<mpq_class> values)
+      : p_(std::make_shared<std::vector<mpq_class>>(std::move(values))) {}
+
+  const std::vector<mpq_class>& get() const { return *p_; }
+  operator const std::vector<mpq_class>&() const { return *p_; }
+  std::size_t size() const { return p_->size(); }
+  const mpq_class& operator[](std::size_t i) const { return (*p_)[i]; }
+  mpq_class& operator[](std::size_t i) { return own()[i]; }
+  auto begin() const { return p_->cbegin(); }
+  auto end() const { return p_->cend(); }
+  auto begin() { return own().begin(); }
+  auto end() { return own().end(); }
+  void resize(std::size_t n) { own().resize(n); }
+  friend bool operator==(const CoefficientVector& a, const CoefficientVector& b) {
+    return a.p_ == b.p_ || *a.p_ == *b.p_;
+  }
+
+private:
+  std::vector<mpq_class>& own() {
+    if (p_.use_count() > 1) p_ = std::make_shared<std::vector<mpq_class>>(*p_);
+    return *p_;
+  }
+  std::shared_ptr<std::vector<mpq_class>> p_;
 };
 
 /// An element of K_m, or (with no field) a plain rational: `Cyclotomic(0)`, `Cyclotomic(1)` work
@@ -117,7 +163,9 @@ public:
   Cyclotomic(int v) : coefficients_{mpq_class(v)} {}
   Cyclotomic(long v) : coefficients_{mpq_class(v)} {}
   Cyclotomic(const mpz_class& v) : coefficients_{mpq_class(v)} {}
-  Cyclotomic(const mpq_class& v) : coefficients_{v} {}
+  /// gmpxx does not reduce mpq_class(2, 2); == compares coefficients, so they are kept in
+  /// lowest terms from the start.
+  Cyclotomic(const mpq_class& v) : coefficients_{v} { coefficients_[0].canonicalize(); }
   /// Σ coefficients[i] c^i in `field` (coefficients.size() <= degree; padded with zeros).
   Cyclotomic(CyclotomicFieldPtr field, std::vector<mpq_class> coefficients);
 
@@ -125,7 +173,7 @@ public:
   bool is_rational_mode() const { return field_ == nullptr; }
   const CyclotomicFieldPtr& field() const { return field_; }
   /// Size 1 in rational mode, d in a field.
-  const std::vector<mpq_class>& coefficients() const { return coefficients_; }
+  const std::vector<mpq_class>& coefficients() const { return coefficients_.get(); }
   /// The value is rational (every coefficient of c^i, i >= 1, is zero).
   bool is_rational() const;
   /// The value when is_rational().
@@ -172,7 +220,7 @@ private:
   std::vector<mpq_class> coefficients_in(const CyclotomicFieldPtr& field) const;
 
   CyclotomicFieldPtr field_;
-  std::vector<mpq_class> coefficients_;
+  CoefficientVector coefficients_;
 };
 
 Cyclotomic abs(const Cyclotomic& x);
