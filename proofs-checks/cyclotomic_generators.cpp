@@ -483,7 +483,6 @@ rc::Gen<RotationalStructure> rotational_structure(bool same_radii) {
 
 // ----- failure records -------------------------------------------------------------------------
 
-
 std::string rotational_record(const std::string& lemma, const RotationalStructure& s) {
   // The templated-structure format itself (K_m numbers as "K<m>[a0, ...]"), so that
   // `symmesh check FILE` reads the counterexample in the same field.
