@@ -2,6 +2,7 @@
 #   make demo : install deps, build Release, run the main job on a built-in example into out/
 #   make test : install deps, build, run every test (unit, proofs-checks, CLI end-to-end)
 #   make bench: build the benchmarks (Release, build-bench/), run them, write docs/benchmarks/
+#               (rotation composition and the Lemma 4.2 n-gon check, K_m vs CORE; ~15 min)
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
@@ -28,8 +29,9 @@ test: build
 
 bench: deps
 	cmake -S . -B $(BENCH_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DSYMMESH_BUILD_TESTS=OFF -DSYMMESH_BUILD_BENCH=ON $(CMAKE_FLAGS)
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition bench_lemma42_ngon
 	bash bench/run_rotation_composition.sh $(BENCH_BUILD)/bench/bench_rotation_composition docs/benchmarks
+	bash bench/run_lemma42_ngon.sh $(BENCH_BUILD)/bench/bench_lemma42_ngon docs/benchmarks
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

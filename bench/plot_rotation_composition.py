@@ -3,7 +3,8 @@
 
 Usage: plot_rotation_composition.py CSV PNG
 Timeouts are drawn at the limit with an upward triangle and a "> limit" label; each repeat is
-a small dot behind the median line.
+a small dot behind the median line; (type, n) not run (a smaller n was already over the limit)
+are listed below the plot.
 """
 import csv
 import sys
@@ -20,9 +21,10 @@ def main(csv_path, png_path):
     style = {"cyclotomic": ("tab:blue", "o", "Cyclotomic K_lcm(4,n) (symmesh)"),
              "core": ("tab:red", "s", "CORE::Expr (Epeck_with_sqrt)")}
     fig, ax = plt.subplots(figsize=(7, 4.5))
+    notes = []
     for t, (color, marker, label) in style.items():
         med = sorted((r for r in rows if r["type"] == t and r["repeat"] == "median"
-                      and r["status"] != "error"), key=lambda r: int(r["n"]))
+                      and r["status"] in ("ok", "timeout")), key=lambda r: int(r["n"]))
         reps = [r for r in rows if r["type"] == t and r["repeat"] != "median"
                 and r["status"] == "ok"]
         ax.scatter([int(r["n"]) for r in reps], [max(float(r["seconds"]), 1e-6) for r in reps],
@@ -45,6 +47,11 @@ def main(csv_path, png_path):
                 ax.annotate(f"> {float(r['seconds']):g} s", (int(r["n"]), float(r["seconds"])),
                             textcoords="offset points", xytext=(0, 8), ha="center",
                             fontsize=8, color=color)
+        skipped = [r["n"] for r in rows if r["type"] == t and r["repeat"] == "median"
+                   and r["status"] == "not_run"]
+        if skipped:
+            notes.append(f"{t}: not run for n = {', '.join(skipped)} "
+                         "(a smaller n was already over the limit)")
     ax.axhline(limit, color="gray", linestyle=":", linewidth=1)
     ax.axhline(1.0, color="green", linestyle="--", linewidth=0.8, alpha=0.6)
     ax.text(8, 1.1, "1 s", color="green", fontsize=8)
@@ -59,7 +66,9 @@ def main(csv_path, png_path):
     ax.set_title("Exact rotation composition: Cyclotomic vs CORE")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8, loc="center right")
-    fig.tight_layout()
+    if notes:
+        fig.text(0.01, 0.01, "\n".join(notes), fontsize=7, color="dimgray", va="bottom")
+    fig.tight_layout(rect=(0, 0.04 * len(notes), 1, 1))
     fig.savefig(png_path, dpi=120)
     print(f"wrote {png_path}")
 

@@ -4,8 +4,9 @@
 //   core       : CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt::FT (CORE::Expr),
 //                cos/sin of 2π/n by half-angle square roots from θ = π/2 (n = 2^k, k >= 2).
 //
-// Usage: bench_rotation_composition --type cyclotomic|core --n N [--repeats R]
+// Usage: bench_rotation_composition --type cyclotomic|core --n N [--repeats R] [--first-repeat K]
 //                                   [--limit-seconds L] [--memory-limit-mb M] [--header]
+// (--first-repeat: number of the first repeat in the output, default 1.)
 //
 // Every repeat runs in a forked child process (fresh caches, fresh CORE DAG) that the parent
 // kills after L seconds. One CSV line per repeat on stdout:
@@ -89,6 +90,7 @@ struct Options {
   std::string type;
   long n = 0;
   int repeats = 1;
+  int first_repeat = 1;
   double limit_seconds = 60;
   long memory_limit_mb = 4096;
   bool header = false;
@@ -97,7 +99,7 @@ struct Options {
 [[noreturn]] void usage(const char* message) {
   std::cerr << "bench_rotation_composition: " << message << "\n"
             << "usage: bench_rotation_composition --type cyclotomic|core --n N [--repeats R]"
-               " [--limit-seconds L] [--memory-limit-mb M] [--header]\n";
+               " [--first-repeat K] [--limit-seconds L] [--memory-limit-mb M] [--header]\n";
   std::exit(2);
 }
 
@@ -116,6 +118,8 @@ Options parse(int argc, char** argv) {
         o.n = std::stol(value());
       else if (arg == "--repeats")
         o.repeats = std::stoi(value());
+      else if (arg == "--first-repeat")
+        o.first_repeat = std::stoi(value());
       else if (arg == "--limit-seconds")
         o.limit_seconds = std::stod(value());
       else if (arg == "--memory-limit-mb")
@@ -131,6 +135,7 @@ Options parse(int argc, char** argv) {
   if (o.type != "cyclotomic" && o.type != "core") usage("--type must be cyclotomic or core");
   if (o.n < 3) usage("--n must be >= 3");
   if (o.repeats < 1) usage("--repeats must be >= 1");
+  if (o.first_repeat < 1) usage("--first-repeat must be >= 1");
   if (!(o.limit_seconds > 0)) usage("--limit-seconds must be > 0");
   return o;
 }
@@ -226,7 +231,7 @@ std::string run_once(const Options& o) {
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   if (o.header) std::cout << "type,n,repeat,seconds,is_identity,status\n" << std::flush;
-  for (int r = 1; r <= o.repeats; ++r) {
+  for (int r = o.first_repeat; r < o.first_repeat + o.repeats; ++r) {
     const std::string fields = run_once(o);
     std::cout << o.type << ',' << o.n << ',' << r << ',' << fields << '\n' << std::flush;
   }

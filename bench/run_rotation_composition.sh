@@ -5,9 +5,14 @@
 #
 # Usage: bench/run_rotation_composition.sh [BINARY] [OUT_DIR]
 # Environment: LIMIT_SECONDS (60) time box of one CORE/cyclotomic run, REPEATS (3),
-#              NS ("8 16 32 64 128"), MEMORY_LIMIT_MB (4096) address-space limit of one run.
+#              NS ("8 16 32 64 128"), MEMORY_LIMIT_MB (4096) address-space limit of one run,
+#              SKIP_AFTER_TIMEOUT (1; 0 runs every repeat of every n).
 # A run that exceeds LIMIT_SECONDS is killed and recorded with seconds = LIMIT_SECONDS,
 # status = timeout ("> limit"); a median row is a timeout when the median repeat is one.
+# With SKIP_AFTER_TIMEOUT=1 (keeps `make bench` short), once more than half of the repeats of
+# (type, n) timed out the remaining ones are not run (the median is "> limit" whatever they
+# give), and a type whose median timed out is not run for larger n; such rows have
+# status = not_run and are reported as such.
 set -euo pipefail
 
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -17,6 +22,7 @@ LIMIT_SECONDS="${LIMIT_SECONDS:-60}"
 REPEATS="${REPEATS:-3}"
 NS="${NS:-8 16 32 64 128}"
 MEMORY_LIMIT_MB="${MEMORY_LIMIT_MB:-4096}"
+SKIP_AFTER_TIMEOUT="${SKIP_AFTER_TIMEOUT:-1}"
 
 mkdir -p "$OUT_DIR"
 CSV="$OUT_DIR/cyclotomic_vs_core.csv"
@@ -24,10 +30,29 @@ RAW="$(mktemp)"
 trap 'rm -f "$RAW"' EXIT
 
 echo "type,n,repeat,seconds,is_identity,status" >"$RAW"
+declare -A over_at # type -> the n whose median was over the limit
 for n in $NS; do
   for type in cyclotomic core; do
-    "$BIN" --type "$type" --n "$n" --repeats "$REPEATS" --limit-seconds "$LIMIT_SECONDS" \
-      --memory-limit-mb "$MEMORY_LIMIT_MB" | tee -a "$RAW"
+    if [ -n "${over_at[$type]:-}" ]; then
+      for r in $(seq 1 "$REPEATS"); do
+        echo "$type,$n,$r,,,not_run" | tee -a "$RAW"
+      done
+      continue
+    fi
+    timeouts=0
+    for r in $(seq 1 "$REPEATS"); do
+      if [ "$SKIP_AFTER_TIMEOUT" = 1 ] && [ $((2 * timeouts)) -gt "$REPEATS" ]; then
+        echo "$type,$n,$r,,,not_run" | tee -a "$RAW"
+        continue
+      fi
+      line="$("$BIN" --type "$type" --n "$n" --repeats 1 --first-repeat "$r" \
+        --limit-seconds "$LIMIT_SECONDS" --memory-limit-mb "$MEMORY_LIMIT_MB")"
+      echo "$line" | tee -a "$RAW"
+      case "$line" in *,timeout) timeouts=$((timeouts + 1)) ;; esac
+    done
+    if [ "$SKIP_AFTER_TIMEOUT" = 1 ] && [ $((2 * timeouts)) -gt "$REPEATS" ]; then
+      over_at[$type]=$n
+    fi
   done
 done
 
@@ -47,8 +72,15 @@ with open(out, "w", newline="") as f:
         if (r["type"], r["n"]) not in keys:
             keys.append((r["type"], r["n"]))
     for t, n in keys:
-        rs = sorted((r for r in rows if r["type"] == t and r["n"] == n and r["status"] != "error"),
-                    key=lambda r: (float(r["seconds"]), r["status"] == "timeout"))
+        all_rs = [r for r in rows if r["type"] == t and r["n"] == n]
+        if all(r["status"] == "not_run" for r in all_rs):  # a smaller n was already over
+            w.writerow({"type": t, "n": n, "repeat": "median", "status": "not_run",
+                        "limit_seconds": f"{limit:g}"})
+            continue
+        # A repeat skipped because the median was already over the limit counts as over it.
+        rs = [dict(r, seconds=f"{limit:.6f}", status="timeout") if r["status"] == "not_run"
+              else r for r in all_rs if r["status"] != "error"]
+        rs.sort(key=lambda r: (float(r["seconds"]), r["status"] == "timeout"))
         if not rs:
             w.writerow({"type": t, "n": n, "repeat": "median", "status": "error",
                         "limit_seconds": f"{limit:g}"})
@@ -82,6 +114,8 @@ def cell(t, n):
         if r["type"] == t and int(r["n"]) == n:
             if r["status"] == "timeout":
                 return f"> {float(r['limit_seconds']):g} s (timeout)"
+            if r["status"] == "not_run":
+                return "not run (a smaller n was already over the limit)"
             if r["status"] == "error":
                 return "error"
             return f"{float(r['seconds']):.4f} s ({'identity' if r['is_identity'] == 'true' else 'NOT identity'})"
