@@ -95,6 +95,7 @@ def plot(csv_path, png_path):
     top = max(limits) if limits else 60.0
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     notes = []
+    drawn = False
     for kernel, (color, marker, label) in KERNELS.items():
         med = [r for r in medians(rows, kernel) if r["status"] in ("ok", "timeout")]
         if not med and not any(r["kernel"] == kernel for r in rows):
@@ -110,6 +111,7 @@ def plot(csv_path, png_path):
             ax.plot([x0, x1], [y0, y1], color=color, linestyle=":" if dotted else "-", alpha=0.7)
         ok = [r for r in med if r["status"] == "ok"]
         to = [r for r in med if r["status"] == "timeout"]
+        drawn = drawn or bool(med)
         ax.plot([int(r["n"]) for r in ok], [max(float(r["seconds"]), 1e-6) for r in ok],
                 linestyle="none", marker=marker, color=color, label=label + " (median)")
         if to:
@@ -130,8 +132,12 @@ def plot(csv_path, png_path):
     for lim in sorted(set(limits)):
         ax.axhline(lim, color="gray", linestyle=":", linewidth=1)
     ax.set_xscale("log", base=2)
-    ax.set_yscale("log")
+    if drawn:
+        ax.set_yscale("log")
+    else:
+        ax.text(0.5, 0.5, "no run finished or timed out", transform=ax.transAxes, ha="center")
     ns = sorted({int(r["n"]) for r in rows})
+    ax.set_xlim(min(ns) / 1.3, max(ns) * 1.3)
     ax.set_xticks(ns)
     ax.set_xticklabels([str(n) for n in ns])
     ax.set_ylim(top=top * 4)

@@ -120,8 +120,18 @@ def cell(t, n):
                 return "error"
             return f"{float(r['seconds']):.4f} s ({'identity' if r['is_identity'] == 'true' else 'NOT identity'})"
     return "-"
-print("| n | Cyclotomic (K_lcm(4,n)) | CORE (Epeck_with_sqrt) |")
-print("|---:|---|---|")
+def ratio(n):
+    k = [r for r in rows if r["type"] == "cyclotomic" and int(r["n"]) == n]
+    c = [r for r in rows if r["type"] == "core" and int(r["n"]) == n]
+    if not k or not c or k[0]["status"] != "ok":
+        return "-"
+    if c[0]["status"] == "ok":
+        return f"{float(c[0]['seconds']) / float(k[0]['seconds']):.0f}×"
+    if c[0]["status"] == "timeout":
+        return f"> {float(c[0]['limit_seconds']) / float(k[0]['seconds']):.0f}×"
+    return "-"
+print("| n | Cyclotomic (K_lcm(4,n)) | CORE (Epeck_with_sqrt) | CORE / Cyclotomic (medians) |")
+print("|---:|---|---|---:|")
 for n in ns:
-    print(f"| {n} | {cell('cyclotomic', n)} | {cell('core', n)} |")
+    print(f"| {n} | {cell('cyclotomic', n)} | {cell('core', n)} | {ratio(n)} |")
 PY
