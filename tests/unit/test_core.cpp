@@ -6,6 +6,8 @@
 #include "symmesh/core/respect.h"
 #include "symmesh/core/structure_report.h"
 
+#include <random>
+
 using namespace symmesh::core;
 using symmesh::Exact;
 using P2 = Point<Exact, 2>;
@@ -91,6 +93,53 @@ TEST(Predicates, RelativeInteriors) {
                                                  {p3(1, 1, -1), p3(1, 1, 1)})));
   EXPECT_FALSE((relative_interiors_meet<Exact, 3>({p3(0, 0, 0), p3(4, 0, 0), p3(0, 4, 0)},
                                                   {p3(5, 5, -1), p3(5, 5, 1)})));
+}
+
+// The two-triangle fast path (separating axis theorem over the 6 edge lines) against the
+// general decision (all candidate planes, then the exact LP), on random triangles of a 4x4 grid,
+// where shared edges, shared vertices, vertices on edges and collinear edges are frequent.
+TEST(Predicates, TriangleEdgeLinesAgreeWithTheGeneralDecision) {
+  std::mt19937 rng(20261122);
+  std::uniform_int_distribution<int> coord(0, 3);
+  const auto random_triangle = [&] {
+    for (;;) {
+      std::vector<P2> t{p2(coord(rng), coord(rng)), p2(coord(rng), coord(rng)),
+                        p2(coord(rng), coord(rng))};
+      if (detail::orientation_sign<Exact>(t[0], t[1], t[2]) != 0) return t;
+    }
+  };
+  int interiors_meet = 0, closed_meet_only = 0, apart = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const auto a = random_triangle(), b = random_triangle();
+    const bool rel = !weakly_separated<Exact, 2>(a, b) &&
+                     common_point<Exact, 2>({{a, true}, {b, true}}).strict_meet;
+    const bool closed = !strictly_separated<Exact, 2>(a, b) &&
+                        common_point<Exact, 2>({{a, false}, {b, false}}).closed_meet;
+    ASSERT_EQ((relative_interiors_meet<Exact, 2>(a, b)), rel) << "case " << k;
+    ASSERT_EQ((closed_simplices_meet<Exact, 2>(a, b)), closed) << "case " << k;
+    (rel ? interiors_meet : (closed ? closed_meet_only : apart))++;
+  }
+  // The sample exercises all three outcomes, touching (closed only) included.
+  EXPECT_GT(interiors_meet, 100);
+  EXPECT_GT(closed_meet_only, 100);
+  EXPECT_GT(apart, 100);
+}
+
+TEST(Predicates, TriangleEdgeLinesOnTouchingTriangles) {
+  const std::vector<P2> a{p2(0, 0), p2(2, 0), p2(0, 2)};
+  // Shared edge: interiors disjoint, closed sets meet.
+  EXPECT_FALSE((relative_interiors_meet<Exact, 2>(a, {p2(2, 0), p2(0, 2), p2(2, 2)})));
+  EXPECT_TRUE((closed_simplices_meet<Exact, 2>(a, {p2(2, 0), p2(0, 2), p2(2, 2)})));
+  // A vertex of b in the middle of an edge of a, b outside.
+  EXPECT_FALSE((relative_interiors_meet<Exact, 2>(a, {p2(1, 1), p2(3, 1), p2(1, 3)})));
+  EXPECT_TRUE((closed_simplices_meet<Exact, 2>(a, {p2(1, 1), p2(3, 1), p2(1, 3)})));
+  // Nested, and crossing without any vertex inside the other (a star of David).
+  EXPECT_TRUE(
+      (relative_interiors_meet<Exact, 2>(a, {p2q(1, 4, 1, 4), p2q(1, 2, 1, 4), p2q(1, 4, 1, 2)})));
+  EXPECT_TRUE((relative_interiors_meet<Exact, 2>({p2(0, 0), p2(6, 0), p2(3, 6)},
+                                                 {p2(0, 4), p2(6, 4), p2(3, -2)})));
+  // Apart: a gap beyond the hypotenuse of a.
+  EXPECT_FALSE((closed_simplices_meet<Exact, 2>(a, {p2(3, 0), p2(3, 3), p2(1, 3)})));
 }
 
 TEST(ElementComplex, SplitSquareIsAMeshAndBoundaryIsFound) {

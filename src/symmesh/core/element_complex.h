@@ -160,6 +160,63 @@ std::array<bool, 3> side_flags(const std::vector<Point<FT, D>>& x, const Point<F
 }
 } // namespace detail
 
+namespace detail {
+/// Sign of the orientation of (p, q, r) in the plane.
+template <class FT>
+int orientation_sign(const Point<FT, 2>& p, const Point<FT, 2>& q, const Point<FT, 2>& r) {
+  const FT v = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+/// How the line through an edge of a separates the triangle b from a. Both inputs have three
+/// points. Returns nullopt when a is degenerate (collinear); otherwise `weak` when some edge line
+/// of a has all of b on its closed far side, and `strict` when on its open far side.
+struct EdgeSeparation {
+  bool weak = false, strict = false;
+};
+template <class FT>
+std::optional<EdgeSeparation> edge_lines_separate(const std::vector<Point<FT, 2>>& a,
+                                                  const std::vector<Point<FT, 2>>& b) {
+  EdgeSeparation out;
+  for (int e = 0; e < 3; ++e) {
+    const auto &p = a[e], &q = a[(e + 1) % 3], &r = a[(e + 2) % 3];
+    const int inside = orientation_sign<FT>(p, q, r);
+    if (inside == 0) return std::nullopt;
+    bool weak = true, strict = true;
+    for (const auto& x : b) {
+      const int s = orientation_sign<FT>(p, q, x) * inside;
+      weak = weak && s <= 0;
+      strict = strict && s < 0;
+      if (!weak) break;
+    }
+    out.weak = out.weak || weak;
+    out.strict = out.strict || strict;
+    if (out.strict) break;
+  }
+  return out;
+}
+
+/// Two triangles in the plane by the separating axis theorem: the Minkowski difference a − b is
+/// a convex polygon whose edges are parallel to edges of a or b, so a separating line, if any,
+/// can be taken through an edge of a or of b. Returns nullopt for degenerate input.
+template <class FT>
+std::optional<EdgeSeparation> triangles_separation(const std::vector<Point<FT, 2>>& a,
+                                                   const std::vector<Point<FT, 2>>& b) {
+  const auto ab = edge_lines_separate<FT>(a, b);
+  if (!ab) return std::nullopt;
+  if (ab->strict) return ab;
+  const auto ba = edge_lines_separate<FT>(b, a);
+  if (!ba) return std::nullopt;
+  return EdgeSeparation{ab->weak || ba->weak, ba->strict};
+}
+
+template <class FT, int D>
+bool are_two_triangles_in_plane(const std::vector<Point<FT, D>>& a,
+                                const std::vector<Point<FT, D>>& b) {
+  return D == 2 && a.size() == 3 && b.size() == 3;
+}
+} // namespace detail
+
 /// A hyperplane puts a and b in opposite closed half-spaces without containing both: then
 /// relint(a) ∩ relint(b) = ∅ (a convex set in a closed half-space, not inside its boundary, has
 /// its relative interior in the open half-space).
@@ -199,6 +256,11 @@ template <class FT, int D>
 bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
                              const std::vector<Point<FT, D>>& b) {
   if (a.size() == 1 && b.size() == 1) return a[0] == b[0];
+  if constexpr (D == 2) {
+    // The common case of overlap and conformity tests: 6 edge lines instead of all candidates.
+    if (detail::are_two_triangles_in_plane<FT, D>(a, b))
+      if (const auto sep = detail::triangles_separation<FT>(a, b)) return !sep->weak;
+  }
   if (weakly_separated<FT, D>(a, b)) return false;
   if (a.size() == 1) {
     auto mu = barycentric<FT, D>(b, a[0]);
@@ -211,6 +273,10 @@ bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
 /// conv a ∩ conv b ≠ ∅ (closed sets), decided exactly.
 template <class FT, int D>
 bool closed_simplices_meet(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
+  if constexpr (D == 2) {
+    if (detail::are_two_triangles_in_plane<FT, D>(a, b))
+      if (const auto sep = detail::triangles_separation<FT>(a, b)) return !sep->strict;
+  }
   if (strictly_separated<FT, D>(a, b)) return false;
   return common_point<FT, D>({{a, false}, {b, false}}).closed_meet;
 }

@@ -154,6 +154,19 @@ public:
   const Mat& matrix() const { return a_; }
   const Vec& translation_part() const { return b_; }
 
+  /// The same motion over another number type, entry by entry.
+  /// \pre `to` is an exact field embedding (e.g. a lazy wrapper of FT), so A^T A = I still holds
+  /// and is not re-checked.
+  template <class To, class F>
+  RigidTransformation<To, D> convert_numbers(F&& to) const {
+    RigidTransformation<To, D> t;
+    for (int i = 0; i < D; ++i) {
+      for (int j = 0; j < D; ++j) t.a_[i][j] = to(a_[i][j]);
+      t.b_[i] = to(b_[i]);
+    }
+    return t;
+  }
+
   /// det A, which is +1 for proper and -1 for improper (orientation-reversing) motions.
   FT determinant_of_linear_part() const {
     Matrix<FT> m(D, std::vector<FT>(D));
@@ -181,6 +194,9 @@ public:
   }
 
 private:
+  template <class, int>
+  friend class RigidTransformation;
+
   static RigidTransformation about_center(const Mat& a, const Vec& c) {
     RigidTransformation t;
     t.a_ = a;

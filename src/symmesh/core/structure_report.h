@@ -35,10 +35,15 @@ struct PatchCounts {
 /// Exact text of a number: "n" or "n/d" in lowest terms for rationals, "K<m>[a_0, ...]" (the
 /// coefficients in the basis of spec/number-type.md) for elements of K_m. Reports hold text so
 /// that they do not depend on the kernel the structure was analysed in.
+template <class T>
+struct IsLazyExact : std::false_type {};
+template <class ET>
+struct IsLazyExact<CGAL::Lazy_exact_nt<ET>> : std::true_type {};
+
 template <class FT>
 std::string exact_text(const FT& x) {
   std::ostringstream os;
-  if constexpr (std::is_same_v<FT, Exact>)
+  if constexpr (IsLazyExact<FT>::value)
     os << CGAL::exact(x);
   else
     os << x;
@@ -167,13 +172,15 @@ StructureReport analyse(const TemplatedStructure<FT, D>& x) {
   return r;
 }
 
-// Instantiated once: in instantiate.cpp for the default exact kernel, in
-// cyclotomic_instantiations.cpp for K_m.
+// Instantiated once, in instantiate.cpp for the default exact kernel.
 extern template StructureReport analyse<Exact, 2>(const TemplatedStructure<Exact, 2>&);
 extern template StructureReport analyse<Exact, 3>(const TemplatedStructure<Exact, 3>&);
-extern template StructureReport
-analyse<number::Cyclotomic, 2>(const TemplatedStructure<number::Cyclotomic, 2>&);
-extern template StructureReport
-analyse<number::Cyclotomic, 3>(const TemplatedStructure<number::Cyclotomic, 3>&);
+
+/// The analysis of a structure over K_m (spec/number-type.md#core-over-k-m). It runs on
+/// CGAL::Lazy_exact_nt<Cyclotomic>, as Epeck does over the rationals: certified interval
+/// approximations decide most signs, and exact field arithmetic is done only where they do not
+/// (degenerate, i.e. zero, signs). Defined in lazy_cyclotomic_instantiations.cpp.
+StructureReport analyse(const TemplatedStructure<number::Cyclotomic, 2>& x);
+StructureReport analyse(const TemplatedStructure<number::Cyclotomic, 3>& x);
 
 } // namespace symmesh::core

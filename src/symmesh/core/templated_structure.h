@@ -114,6 +114,29 @@ struct TemplatedStructure {
   }
 };
 
+/// The same structure over another number type (coordinates and transformations mapped by `to`).
+/// \pre `to` is an exact field embedding, e.g. FT -> CGAL::Lazy_exact_nt<FT>
+template <class To, class FT, int D, class F>
+TemplatedStructure<To, D> convert_numbers(const TemplatedStructure<FT, D>& x, F&& to) {
+  TemplatedStructure<To, D> y;
+  for (const auto& t : x.templates) {
+    Template<To, D> u{t.name, t.kind, {}};
+    for (const auto& p : t.mesh.points) {
+      Point<To, D> q;
+      for (int d = 0; d < D; ++d) q[d] = to(p[d]);
+      u.mesh.points.push_back(q);
+    }
+    u.mesh.elements = t.mesh.elements;
+    y.templates.push_back(std::move(u));
+  }
+  for (const auto& list : x.instances) {
+    y.instances.emplace_back();
+    for (const auto& s : list)
+      y.instances.back().push_back({s.transformation.template convert_numbers<To>(to), s.region});
+  }
+  return y;
+}
+
 /// inst(X, i, g) = T_{i,g}(X_i), over its own transformed point array.
 template <class FT, int D>
 ElementComplex<FT, D> instance(const TemplatedStructure<FT, D>& x, InstanceId id) {

@@ -10,6 +10,7 @@
 #include "symmesh/core/element_complex.h"
 #include "symmesh/number/cyclotomic_cgal.h"
 
+#include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Polygon_2_algorithms.h>
@@ -1009,16 +1010,19 @@ struct Ring {
   std::size_t first = 0;               // global index of pts[0]
 };
 
-/// The CGAL kernel of a number type: Epeck for rationals, plain Cartesian for an exact field.
+/// The CGAL kernel of a number type: Epeck for rationals; for an exact field, Cartesian over its
+/// lazy wrapper, so that the orientation tests of the polygon checks and the triangulation are
+/// decided on certified intervals unless they are degenerate (as Epeck does for the rationals).
 template <class FT>
-using KernelOf =
-    std::conditional_t<std::is_same_v<FT, Exact>, CGAL::Epeck, CGAL::Simple_cartesian<FT>>;
+using KernelOf = std::conditional_t<std::is_same_v<FT, Exact>, CGAL::Epeck,
+                                    CGAL::Simple_cartesian<CGAL::Lazy_exact_nt<FT>>>;
 template <class FT>
 using P2 = typename KernelOf<FT>::Point_2;
 
 template <class FT>
 P2<FT> to_cgal(const core::Point<FT, 2>& p) {
-  return P2<FT>(p[0], p[1]);
+  using LFT = typename KernelOf<FT>::FT;
+  return P2<FT>(LFT(p[0]), LFT(p[1]));
 }
 
 template <class FT>

@@ -521,7 +521,8 @@ bool only_constant(const std::vector<mpq_class>& a) {
 
 } // namespace
 
-int CyclotomicField::filtered_sign(const std::vector<mpq_class>& a) const {
+bool CyclotomicField::filtered_value(const std::vector<mpq_class>& a, double& value,
+                                     double& bound) const {
   // Each |â_i − a_i| <= 2u|a_i| (mpq_get_d truncates), |ĉ^i − c^i| <= 1.01u|c^i|, and d products
   // and sums add at most (d + 2)u relative to Σ|a_i c^i| (u = 2^-53, no underflow or overflow:
   // the range test below). The bound (4d + 16)u·Σ|â_i ĉ^i| covers that with a wide margin.
@@ -529,12 +530,19 @@ int CyclotomicField::filtered_sign(const std::vector<mpq_class>& a) const {
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (a[i] == 0) continue;
     const double x = a[i].get_d();
-    if (!(std::fabs(x) > 1e-250 && std::fabs(x) < 1e250)) return 0;
+    if (!(std::fabs(x) > 1e-250 && std::fabs(x) < 1e250)) return false;
     const double t = x * c_pow_double_[i];
     sum += t;
     magnitude += std::fabs(t);
   }
-  const double bound = magnitude * (4.0 * d_ + 16.0) * 0x1p-53;
+  value = sum;
+  bound = magnitude * (4.0 * d_ + 16.0) * 0x1p-53;
+  return true;
+}
+
+int CyclotomicField::filtered_sign(const std::vector<mpq_class>& a) const {
+  double sum = 0, bound = 0;
+  if (!filtered_value(a, sum, bound)) return 0;
   if (sum > bound) return 1;
   if (sum < -bound) return -1;
   return 0;
@@ -581,6 +589,11 @@ int CyclotomicField::sign(const std::vector<mpq_class>& a) const {
 
 std::pair<double, double> CyclotomicField::to_interval(const std::vector<mpq_class>& a) const {
   if (all_zero(a)) return {0.0, 0.0};
+  // The filter's enclosure, one rounding step wider on each side (its bound already has a wide
+  // margin over the true error), when it decides the sign; lazy kernels call this per node.
+  double sum = 0, bound = 0;
+  if (filtered_value(a, sum, bound) && (sum > bound || sum < -bound))
+    return {std::nextafter(sum - bound, -HUGE_VAL), std::nextafter(sum + bound, HUGE_VAL)};
   for (long prec = start_precision;; prec *= 2) {
     auto pw = powers(prec);
     Interval sum(prec);

@@ -82,6 +82,9 @@ public:
   /// Throws std::domain_error for 0; std::logic_error when the (test-hooked) minimal polynomial
   /// shares a factor with a, i.e. is not irreducible.
   std::vector<mpq_class> inverse(const std::vector<mpq_class>& a) const;
+  /// Σ a_i ĉ^i in double and a bound on its distance to the exact value; false when a
+  /// coefficient is outside the double range the bound assumes.
+  bool filtered_value(const std::vector<mpq_class>& a, double& value, double& bound) const;
   /// Sign by a double evaluation with a rigorous error bound; 0 when that bound does not decide.
   int filtered_sign(const std::vector<mpq_class>& a) const;
   /// filtered_sign of a − b (same degree), without forming a − b.
