@@ -1,0 +1,353 @@
+// Algorithm 5.5/5.6 (spec/generation.md#alg-5-6). Instantiated for the rationals (Epeck's FT)
+// and for K_m through Lazy_exact_nt<Cyclotomic>, like `symmesh check`.
+#include "symmesh/gen/templated_triangle_mesh.h"
+
+#include "symmesh/core/boundary_patch_partition.h"
+#include "symmesh/core/interface_conformity.h"
+#include "symmesh/gen/triangle_mesher.h"
+#include "symmesh/number/cyclotomic_cgal.h"
+
+#include <CGAL/Lazy_exact_nt.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <tuple>
+
+namespace symmesh::gen {
+namespace {
+using Clock = std::chrono::steady_clock;
+using LazyCyclotomic = CGAL::Lazy_exact_nt<number::Cyclotomic>;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+template <class FT>
+FT exact_from_double(double v) {
+  const mpq_class q(v); // exact: every finite double is a dyadic rational
+  if constexpr (std::is_same_v<FT, Exact>)
+    return FT(q);
+  else
+    return FT(number::Cyclotomic(q));
+}
+
+/// The line mesh of one edge face: N parts; interior points get local ids first .. first+N-2.
+struct FaceLine {
+  std::size_t n = 1, first = 0;
+};
+
+template <class FT>
+std::size_t parts_for(const core::Point<FT, 2>& a, const core::Point<FT, 2>& b, const FT& h2,
+                      double h) {
+  const FT l2 = core::dot<FT, 2>(b - a, b - a);
+  // A double guess, then the exact smallest N >= 1 with N²h² >= |b - a|².
+  const double guess = std::ceil(std::sqrt(CGAL::to_double(l2)) / h);
+  std::size_t n = std::max<std::size_t>(1, std::size_t(std::max(1.0, guess)));
+  while (n > 1 && exact_from_double<FT>(double(n - 1) * double(n - 1)) * h2 >= l2) --n;
+  while (exact_from_double<FT>(double(n) * double(n)) * h2 < l2) ++n;
+  return n;
+}
+
+/// Template t's boundary: subdivision points, then the interior points of each edge's line mesh.
+template <class FT>
+struct TemplateBoundary {
+  std::vector<core::Point<FT, 2>> exact_points; ///< exact coordinates of every boundary point
+  std::vector<FaceLine> lines;                  ///< per subdivision face (edges only)
+  BoundaryInput input;
+};
+
+template <class FT>
+TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, const FT& h2,
+                                 double h) {
+  TemplateBoundary<FT> tb;
+  tb.exact_points = sd.points;
+  for (const auto& p : sd.points)
+    tb.input.points.push_back({CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+  tb.lines.resize(sd.faces.size());
+  for (std::size_t f = 0; f < sd.faces.size(); ++f) {
+    const auto& face = sd.faces[f];
+    if (face.dimension != 1) continue;
+    const auto& a = sd.points[face.vertices[0]];
+    const auto& b = sd.points[face.vertices[1]];
+    FaceLine& line = tb.lines[f];
+    line.n = parts_for<FT>(a, b, h2, h);
+    line.first = tb.exact_points.size();
+    std::size_t prev = face.vertices[0];
+    for (std::size_t k = 1; k < line.n; ++k) {
+      const FT t = exact_from_double<FT>(double(k)) / exact_from_double<FT>(double(line.n));
+      core::Point<FT, 2> p;
+      for (int d = 0; d < 2; ++d) p[d] = a[d] + (b[d] - a[d]) * t;
+      tb.exact_points.push_back(p);
+      tb.input.points.push_back({CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+      tb.input.segments.push_back({prev, tb.exact_points.size() - 1});
+      prev = tb.exact_points.size() - 1;
+    }
+    tb.input.segments.push_back({prev, face.vertices[1]});
+  }
+  return tb;
+}
+
+/// The (from, to) vertex pairs of one template boundary mapping, from its face-to-face action.
+template <class FT>
+std::vector<std::pair<mesh::IndexType, mesh::IndexType>>
+mapping_pairs(const core::BoundaryPatchPartition<FT, 2>& bpp, std::size_t letter,
+              const std::vector<TemplateBoundary<FT>>& boundaries) {
+  const auto& m = bpp.mappings[letter];
+  const std::size_t j = m.from_template(), i = m.to_template();
+  const auto& src = bpp.subdivisions[j];
+  const auto& dst = bpp.subdivisions[i];
+  std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
+  for (std::size_t f = 0; f < src.faces.size(); ++f) {
+    const auto g = bpp.step({j, f}, letter);
+    if (!g) continue;
+    const auto& face = src.faces[f];
+    if (face.dimension == 0) {
+      pairs.emplace_back(mesh::IndexType(face.vertices[0]),
+                         mesh::IndexType(dst.faces[g->f].vertices[0]));
+      continue;
+    }
+    const auto& lf = boundaries[j].lines[f];
+    const auto& lg = boundaries[i].lines[g->f];
+    if (lf.n != lg.n)
+      throw std::logic_error("Algorithm 5.6: a mapping joins faces of different line meshes");
+    const auto image_of_first = bpp.step({j, face.vertices[0]}, letter);
+    const bool same_direction =
+        image_of_first && dst.faces[image_of_first->f].vertices[0] == dst.faces[g->f].vertices[0];
+    for (std::size_t k = 1; k < lf.n; ++k)
+      pairs.emplace_back(mesh::IndexType(lf.first + k - 1),
+                         mesh::IndexType(lg.first + (same_direction ? k - 1 : lf.n - k - 1)));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+mesh::Transformation to_double_transformation(const auto& t) {
+  mesh::Transformation out;
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 2; ++c) out.matrix.push_back(CGAL::to_double(t.matrix()[r][c]));
+    out.translation.push_back(CGAL::to_double(t.translation_part()[r]));
+  }
+  return out;
+}
+
+struct UnionFind {
+  std::vector<std::size_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t find(std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  bool unite(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    parent[std::max(a, b)] = std::min(a, b);
+    return true;
+  }
+};
+
+/// Compact SVB: one table per distinct set of pairs, and a spanning set of instance pairs.
+template <class FT>
+void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
+                               const core::BoundaryPatchPartition<FT, 2>& bpp,
+                               const std::vector<TemplateBoundary<FT>>& boundaries,
+                               mesh::TemplatedMeshCompactSvb& out) {
+  std::vector<std::size_t> instance_offset, vertex_offset;
+  std::size_t instances = 0, vertices = 0;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    instance_offset.push_back(instances);
+    vertex_offset.push_back(vertices);
+    instances += x.instances[i].size();
+    vertices += x.instances[i].size() * out.templated.templates[i].mesh.vertex_count();
+  }
+  const auto global_instance = [&](core::InstanceId id) { return instance_offset[id.i] + id.g; };
+  const auto first_vertex = [&](core::InstanceId id) {
+    return vertex_offset[id.i] + id.g * out.templated.templates[id.i].mesh.vertex_count();
+  };
+  struct Candidate {
+    std::size_t letter;
+    std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary || global_instance(m.from) > global_instance(m.to)) continue;
+    candidates.push_back({l, mapping_pairs(bpp, l, boundaries)});
+  }
+  // Interfaces with many identified vertices first, so point contacts implied by them drop out.
+  std::stable_sort(
+      candidates.begin(), candidates.end(),
+      [](const Candidate& a, const Candidate& b) { return a.pairs.size() > b.pairs.size(); });
+  UnionFind uf(vertices);
+  std::map<std::tuple<std::size_t, std::size_t,
+                      std::vector<std::pair<mesh::IndexType, mesh::IndexType>>>,
+           std::size_t>
+      table_of;
+  for (const auto& c : candidates) {
+    const auto& m = bpp.mappings[c.letter];
+    bool adds = false;
+    for (auto [a, b] : c.pairs)
+      adds = uf.unite(first_vertex(m.from) + std::size_t(a), first_vertex(m.to) + std::size_t(b)) ||
+             adds;
+    if (!adds) continue;
+    auto key = std::make_tuple(m.from.i, m.to.i, c.pairs);
+    auto [it, inserted] = table_of.emplace(std::move(key), out.tables.size());
+    if (inserted)
+      out.tables.push_back({mesh::IndexType(m.from.i), mesh::IndexType(m.to.i), c.pairs});
+    out.identifications.push_back({mesh::IndexType(global_instance(m.from)),
+                                   mesh::IndexType(global_instance(m.to)),
+                                   mesh::IndexType(it->second)});
+  }
+}
+
+/// Lemma 4.2 on the boundary layers (triangles with a boundary vertex) in exact arithmetic.
+/// Instance interfaces lie on template boundaries and every boundary element's triangles are in
+/// the layer, so the layers' interfaces are the templates' interfaces.
+template <class FT>
+core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
+                             const std::vector<TemplateBoundary<FT>>& boundaries,
+                             const mesh::TemplatedMesh& tm) {
+  core::TemplatedStructure<FT, 2> layers;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    const auto& b = boundaries[i];
+    const auto& m = tm.templates[i].mesh;
+    const std::size_t boundary_count = b.exact_points.size();
+    core::Template<FT, 2> t{x.templates[i].name, core::TemplateKind::mesh, {}};
+    std::map<std::size_t, core::VertexId> local;
+    const auto vertex = [&](std::size_t v) {
+      auto [it, inserted] = local.emplace(v, core::VertexId(t.mesh.points.size()));
+      if (inserted)
+        t.mesh.points.push_back(v < boundary_count
+                                    ? b.exact_points[v]
+                                    : core::Point<FT, 2>{{exact_from_double<FT>(m.vertex(v)[0]),
+                                                          exact_from_double<FT>(m.vertex(v)[1])}});
+      return it->second;
+    };
+    for (std::size_t c = 0; c < m.cell_count(); ++c) {
+      const auto* cv = m.cell(c);
+      if (std::size_t(cv[0]) >= boundary_count && std::size_t(cv[1]) >= boundary_count &&
+          std::size_t(cv[2]) >= boundary_count)
+        continue;
+      t.mesh.elements.push_back(core::Simplex{
+          vertex(std::size_t(cv[0])), vertex(std::size_t(cv[1])), vertex(std::size_t(cv[2]))});
+    }
+    t.mesh.normalize();
+    t.mesh = core::face_completion(t.mesh);
+    t.mesh.normalize();
+    layers.templates.push_back(std::move(t));
+    layers.instances.push_back(x.instances[i]);
+  }
+  const auto si = core::apply_template(layers);
+  return core::check_interface_conformity(layers, si);
+}
+
+template <class FT>
+GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o) {
+  if (!(o.size > 0) || !std::isfinite(o.size))
+    throw std::invalid_argument("--size must be a positive number");
+  std::ostringstream why;
+  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  if (!x.all_of_kind(core::TemplateKind::geometry))
+    throw std::invalid_argument("Algorithm 5.6 needs geometry templates (\"kind\": \"geometry\")");
+  if (const auto overlap = core::find_instance_overlap(x))
+    throw std::invalid_argument(core::overlap_message(*overlap));
+  const auto say = [&](const std::string& s) {
+    if (o.progress) o.progress(s);
+  };
+  GenerationResult r;
+  auto t0 = Clock::now();
+  const auto bpp = core::boundary_patch_partition(x);
+  r.timings.boundary_patch_partition = seconds_since(t0);
+  say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
+      std::to_string(bpp.mappings.size()) + " mappings");
+
+  t0 = Clock::now();
+  const FT h = exact_from_double<FT>(o.size);
+  const FT h2 = h * h;
+  std::vector<TemplateBoundary<FT>> boundaries;
+  for (const auto& sd : bpp.subdivisions) boundaries.push_back(line_meshes<FT>(sd, h2, o.size));
+  r.timings.line_meshes = seconds_since(t0);
+
+  t0 = Clock::now();
+  auto& tm = r.templated.templated;
+  tm.point_dimension = 2;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    const auto out = mesh_domain_2(boundaries[i].input, {o.size, o.min_angle_deg});
+    mesh::MeshTemplate t;
+    t.mesh.point_dimension = 2;
+    for (const auto& p : out.points) t.mesh.add_vertex(p.data());
+    for (const auto& c : out.triangles) {
+      const mesh::IndexType v[3] = {mesh::IndexType(c[0]), mesh::IndexType(c[1]),
+                                    mesh::IndexType(c[2])};
+      t.mesh.add_cell(mesh::ElementType::triangle, v);
+    }
+    for (const auto& inst : x.instances[i]) {
+      t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
+      t.region_ids.push_back(mesh::RegionIdType(inst.region));
+      tm.transformations.push_back(to_double_transformation(inst.transformation));
+    }
+    say("template " + std::to_string(i + 1) + "/" + std::to_string(x.templates.size()) + " ('" +
+        x.templates[i].name + "'): " + std::to_string(t.mesh.cell_count()) + " triangles");
+    tm.templates.push_back(std::move(t));
+  }
+  r.timings.template_meshing = seconds_since(t0);
+
+  t0 = Clock::now();
+  shared_vertex_bookkeeping(x, bpp, boundaries, r.templated);
+  r.timings.svb = seconds_since(t0);
+
+  t0 = Clock::now();
+  const auto verdict = certify(x, boundaries, tm);
+  r.timings.certificate = seconds_since(t0);
+  r.lemma_4_2_holds = verdict.holds;
+  if (!verdict.holds)
+    r.lemma_4_2_failure =
+        core::to_string(verdict.a) + ", " + core::to_string(verdict.b) + ": " + verdict.detail;
+  say("Lemma 4.2 certificate: " + std::string(verdict.holds ? "holds" : "FAILS") + " (" +
+      std::to_string(verdict.pairs_checked) + " instance pairs)");
+  return r;
+}
+
+template <class FT>
+core::TemplatedStructure<FT, 2> as_one_template(const core::TemplatedStructure<FT, 2>& x) {
+  if (const auto overlap = core::find_instance_overlap(x))
+    throw std::invalid_argument(core::overlap_message(*overlap));
+  const auto si = core::apply_template(x);
+  core::TemplatedStructure<FT, 2> whole;
+  core::Template<FT, 2> t{"whole geometry", core::TemplateKind::geometry, si.at.mesh};
+  whole.templates.push_back(std::move(t));
+  whole.instances.push_back({core::InstanceSpec<FT, 2>{}});
+  return whole;
+}
+
+core::TemplatedStructure<LazyCyclotomic, 2>
+lazily(const core::TemplatedStructure<number::Cyclotomic, 2>& x) {
+  return core::convert_numbers<LazyCyclotomic>(
+      x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
+}
+} // namespace
+
+GenerationResult generate_templated_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                                  const GenerationOptions& options) {
+  return generate(x, options);
+}
+GenerationResult
+generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                 const GenerationOptions& options) {
+  return generate(lazily(x), options);
+}
+GenerationResult generate_conventional_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                                     const GenerationOptions& options) {
+  return generate(as_one_template(x), options);
+}
+GenerationResult
+generate_conventional_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                    const GenerationOptions& options) {
+  return generate(as_one_template(lazily(x)), options);
+}
+
+} // namespace symmesh::gen

@@ -1,0 +1,67 @@
+/// Algorithm 5.5 (initialise a templated mesh) and Algorithm 5.6 (templated triangle mesh
+/// generation using the boundary patch partition) — spec/generation.md#alg-5-6
+///
+/// From a 2D templated geometry: the boundary patch partition (Algorithm 4.1) cuts every template
+/// boundary into faces on which all template boundary mappings act face to face. Every edge face
+/// is split into N equal parts, N = the smallest integer with N·size >= its length, decided
+/// exactly; congruent faces get the same N, so a mapping sends the line mesh of a face onto the
+/// line mesh of its image (Lines 11–20), and each line mesh is symmetric under the reflection
+/// that swaps its ends (what Line 15 asks for irregular instance graphs). Each template is then
+/// meshed without touching its boundary (Line 24, triangle_mesher.h). Interface vertices are
+/// identified combinatorially: a mapping sends face f to face g and the k-th point of f to the
+/// k-th or (N-k)-th point of g, which gives the compact SVB tables (templated_mesh.h).
+/// Afterwards the Lemma 4.2 checker certifies the result in exact arithmetic on the templates'
+/// boundary layers (the triangles with a boundary vertex).
+#pragma once
+#include "symmesh/core/kernel.h"
+#include "symmesh/core/templated_structure.h"
+#include "symmesh/mesh/templated_mesh.h"
+#include "symmesh/number/cyclotomic.h"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace symmesh::gen {
+
+struct GenerationOptions {
+  double size = 0;
+  double min_angle_deg = 20;
+  /// Progress lines (stage, counts, elapsed seconds); empty = quiet.
+  std::function<void(const std::string&)> progress;
+};
+
+struct GenerationTimings {
+  double boundary_patch_partition = 0, line_meshes = 0, template_meshing = 0, svb = 0,
+         certificate = 0;
+  double total() const {
+    return boundary_patch_partition + line_meshes + template_meshing + svb + certificate;
+  }
+};
+
+struct GenerationResult {
+  mesh::TemplatedMeshCompactSvb templated;
+  GenerationTimings timings;
+  bool lemma_4_2_holds = false;
+  std::string lemma_4_2_failure; ///< the failing instance pair, when it does not hold
+};
+
+/// Algorithm 5.6 on a 2D templated geometry over the rationals or K_m.
+/// \pre x is a templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
+/// std::invalid_argument for other input and MeshingError when the mesher cannot respect a
+/// boundary.
+GenerationResult generate_templated_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                                  const GenerationOptions& options);
+GenerationResult
+generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                 const GenerationOptions& options);
+
+/// The conventional baseline (Section 7.1): AT(X) as one template with one instance, meshed by
+/// the same line meshing and the same mesher with the same parameters.
+GenerationResult generate_conventional_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                                     const GenerationOptions& options);
+GenerationResult
+generate_conventional_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                    const GenerationOptions& options);
+
+} // namespace symmesh::gen

@@ -1,0 +1,113 @@
+// Mesh_2 without edge refinement on a pre-split boundary (spec/generation.md#mesher-2).
+#include "symmesh/gen/triangle_mesher.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <map>
+
+namespace symmesh::gen {
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+constexpr std::size_t kNoIndex = std::numeric_limits<std::size_t>::max();
+/// Output index of a vertex; mesher-inserted vertices start without one.
+struct VertexIndex {
+  std::size_t i = kNoIndex;
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexIndex, K,
+                                                       CGAL::Delaunay_mesh_vertex_base_2<K>>;
+using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+// Segments meet only at shared endpoints; a crossing is an input error, not something to repair.
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
+using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+
+/// in_domain = odd number of boundary crossings from the infinite face (holes are even).
+void mark_by_nesting_parity(Cdt& cdt) {
+  std::map<Cdt::Face_handle, int> level;
+  std::deque<std::pair<Cdt::Face_handle, int>> seeds{{cdt.infinite_face(), 0}};
+  while (!seeds.empty()) {
+    auto [start, l] = seeds.front();
+    seeds.pop_front();
+    if (level.count(start)) continue;
+    std::vector<Cdt::Face_handle> stack{start};
+    level[start] = l;
+    while (!stack.empty()) {
+      auto f = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        auto n = f->neighbor(i);
+        if (level.count(n)) continue;
+        if (cdt.is_constrained(Cdt::Edge(f, i))) {
+          seeds.emplace_back(n, l + 1);
+        } else {
+          level[n] = l;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    f->set_in_domain(!cdt.is_infinite(f) && level[f] % 2 == 1);
+}
+} // namespace
+
+TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingParameters& p) {
+  if (!(p.size > 0) || !std::isfinite(p.size))
+    throw std::invalid_argument("mesh size must be a positive number");
+  if (!(p.min_angle_deg >= 0 && p.min_angle_deg <= 33.8))
+    throw std::invalid_argument("minimum angle must be in [0, 33.8] degrees");
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> vh;
+  for (std::size_t k = 0; k < boundary.points.size(); ++k) {
+    const auto& q = boundary.points[k];
+    if (!std::isfinite(q[0]) || !std::isfinite(q[1]))
+      throw MeshingError("a boundary point is not finite");
+    auto v = cdt.insert(K::Point_2(q[0], q[1]));
+    if (v->info().i != kNoIndex)
+      throw MeshingError("two boundary points coincide in double precision");
+    v->info().i = k;
+    vh.push_back(v);
+  }
+  try {
+    for (const auto& s : boundary.segments) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
+  } catch (const Cdt::Intersection_of_constraints_exception&) {
+    throw MeshingError("boundary segments cross or pass through a boundary point");
+  }
+  if (cdt.number_of_vertices() != boundary.points.size())
+    throw MeshingError("the mesher inserted points while building the boundary");
+  if (cdt.dimension() < 2) throw MeshingError("the boundary encloses no area");
+  mark_by_nesting_parity(cdt);
+  const double b = std::pow(std::sin(p.min_angle_deg * M_PI / 180.0), 2);
+  CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
+  mesher.init(true);
+  mesher.refine_mesh();
+
+  TriangleMeshOutput out;
+  out.points = boundary.points;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (v->info().i != kNoIndex) continue;
+    // Any vertex on a constrained edge that is not an input point would alter the boundary.
+    if (cdt.are_there_incident_constraints(v))
+      throw MeshingError("the mesher put a vertex on the boundary");
+    v->info().i = out.points.size();
+    out.points.push_back({v->point().x(), v->point().y()});
+  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_in_domain())
+      out.triangles.push_back(
+          {f->vertex(0)->info().i, f->vertex(1)->info().i, f->vertex(2)->info().i});
+  if (out.triangles.empty()) throw MeshingError("the boundary encloses no area");
+  return out;
+}
+
+} // namespace symmesh::gen

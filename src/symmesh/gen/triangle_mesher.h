@@ -1,0 +1,43 @@
+/// The 2D mesher adapter of Algorithm 5.6, Line 24 — spec/generation.md#mesher-2
+///
+/// CGAL's Delaunay refinement (Mesh_2) in the mode that never alters the boundary
+/// (Delaunay_mesher_no_edge_refinement_2): the caller gives the boundary already split into short
+/// segments (the line meshes); the mesher inserts interior vertices only. The domain is the set
+/// of points enclosed an odd number of times by the boundary segments (nesting parity), so holes
+/// need no seeds. The output keeps the input vertices first, in input order, which is what lets
+/// the generator name boundary vertices combinatorially.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace symmesh::gen {
+
+struct MeshingParameters {
+  double size = 0;          ///< target edge length (Delaunay_mesh_size_criteria_2 size bound)
+  double min_angle_deg = 0; ///< shape bound B = sin²(angle); 0 = no shape criterion
+};
+
+struct BoundaryInput {
+  std::vector<std::array<double, 2>> points;
+  std::vector<std::array<std::size_t, 2>> segments; ///< closed boundary curves, any orientation
+};
+
+struct TriangleMeshOutput {
+  std::vector<std::array<double, 2>> points; ///< input points first, in input order
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+/// Raised when the mesher cannot respect the boundary (crossing segments, a Steiner point on the
+/// boundary): the generator must fail, never ship such a mesh.
+struct MeshingError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// \pre parameters.size > 0; 0 <= min_angle_deg <= 33.8 (Mesh_2's termination bound)
+TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary,
+                                 const MeshingParameters& parameters);
+
+} // namespace symmesh::gen

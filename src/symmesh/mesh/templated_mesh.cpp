@@ -1,0 +1,278 @@
+// MESH/MRMESH and the templated mesh structures (spec/mesh-data-structures.md).
+#include "symmesh/mesh/templated_mesh.h"
+
+#include <map>
+#include <numeric>
+
+namespace symmesh::mesh {
+
+bool Mesh::is_valid(std::ostream* why) const {
+  const auto fail = [&](const char* what) {
+    if (why) *why << what;
+    return false;
+  };
+  if (point_dimension < 1 || point_dimension > 3) return fail("point_dimension not in 1..3");
+  if (vertex_coords.size() % std::size_t(point_dimension) != 0)
+    return fail("vertex_coords is not a multiple of point_dimension");
+  if (cell_vertex_index_offsets.size() != cell_types.size() + 1)
+    return fail("cell_vertex_index_offsets must have cell_count + 1 entries");
+  if (cell_vertex_index_offsets.front() != 0 ||
+      std::size_t(cell_vertex_index_offsets.back()) != cell_vertex_indices.size())
+    return fail("cell_vertex_index_offsets must start at 0 and end at the index count");
+  for (std::size_t c = 0; c < cell_types.size(); ++c)
+    if (cell_vertex_index_offsets[c + 1] - cell_vertex_index_offsets[c] !=
+        mesh::vertex_count(cell_types[c]))
+      return fail("a cell's vertex count does not match its type");
+  for (IndexType v : cell_vertex_indices)
+    if (v < 0 || std::size_t(v) >= vertex_count())
+      return fail("a cell vertex index is out of range");
+  return true;
+}
+
+bool MrMesh::is_valid(std::ostream* why) const {
+  if (!mesh.is_valid(why)) return false;
+  if (cell_region.size() != mesh.cell_count()) {
+    if (why) *why << "cell_region must have one entry per cell";
+    return false;
+  }
+  return true;
+}
+
+std::size_t eq_2_11_bound(std::size_t vertices, std::size_t cells, int n, int max_cell_vertices) {
+  return vertices * 8 * std::size_t(n) + cells * std::size_t(7 + 4 * max_cell_vertices);
+}
+
+std::size_t eq_2_12_bound(std::size_t vertices, std::size_t cells, int n, int max_cell_vertices) {
+  return vertices * 8 * std::size_t(n) + cells * std::size_t(5 + 4 * max_cell_vertices);
+}
+
+void Transformation::apply(const NumericType* x, NumericType* out) const {
+  const std::size_t n = translation.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    NumericType s = translation[i];
+    for (std::size_t j = 0; j < n; ++j) s += matrix[i * n + j] * x[j];
+    out[i] = s;
+  }
+}
+
+std::size_t TemplatedMesh::instance_count() const {
+  std::size_t n = 0;
+  for (const auto& t : templates) n += t.instance_count();
+  return n;
+}
+
+std::size_t TemplatedMesh::bytes() const {
+  std::size_t b = 0;
+  for (const auto& t : templates) b += t.bytes();
+  for (const auto& f : transformations) b += f.bytes();
+  return b;
+}
+
+bool TemplatedMesh::is_valid(std::ostream* why) const {
+  const std::size_t n = std::size_t(point_dimension);
+  for (const auto& f : transformations)
+    if (f.matrix.size() != n * n || f.translation.size() != n) {
+      if (why) *why << "a transformation does not have point_dimension";
+      return false;
+    }
+  for (std::size_t i = 0; i < templates.size(); ++i) {
+    const auto& t = templates[i];
+    if (!t.mesh.is_valid(why)) return false;
+    if (t.mesh.point_dimension != point_dimension || t.region_ids.size() != t.instance_count()) {
+      if (why) *why << "template " << i << ": dimension or region ids do not match";
+      return false;
+    }
+    for (IndexType k : t.transformation_indices)
+      if (k < 0 || std::size_t(k) >= transformations.size()) {
+        if (why) *why << "template " << i << ": transformation index out of range";
+        return false;
+      }
+  }
+  return true;
+}
+
+std::size_t TemplatedMeshSvb::bytes() const {
+  std::size_t b = global_vertices.size() * sizeof(NumericType);
+  for (const auto& t : templates) {
+    b += t.mesh.bytes();
+    for (const auto& i : t.instances) b += i.bytes();
+  }
+  for (const auto& f : transformations) b += f.bytes();
+  return b;
+}
+
+bool TemplatedMeshSvb::is_valid(std::ostream* why) const {
+  for (const auto& t : templates) {
+    if (!t.mesh.is_valid(why)) return false;
+    for (const auto& i : t.instances)
+      for (auto [local, global] : i.local_to_global_vertex_mapping)
+        if (local < 0 || std::size_t(local) >= t.mesh.vertex_count() || global < 0 ||
+            std::size_t(global) >= global_vertex_count()) {
+          if (why) *why << "a local-to-global pair is out of range";
+          return false;
+        }
+  }
+  return true;
+}
+
+std::size_t TemplatedMeshCompactSvb::bytes() const {
+  std::size_t b = templated.bytes() + identifications.size() * sizeof(InstanceIdentification);
+  for (const auto& t : tables) b += t.bytes();
+  return b;
+}
+
+namespace {
+/// Template of each global instance number and its first vertex in a flat numbering.
+struct InstanceIndex {
+  std::vector<std::size_t> template_of, first_vertex;
+  std::size_t total_vertices = 0;
+
+  explicit InstanceIndex(const TemplatedMesh& t) {
+    for (std::size_t i = 0; i < t.templates.size(); ++i)
+      for (std::size_t g = 0; g < t.templates[i].instance_count(); ++g) {
+        template_of.push_back(i);
+        first_vertex.push_back(total_vertices);
+        total_vertices += t.templates[i].mesh.vertex_count();
+      }
+  }
+};
+
+struct UnionFind {
+  std::vector<std::size_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t find(std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  /// Smaller representative wins, so classes are numbered by their first member.
+  bool unite(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    if (b < a) std::swap(a, b);
+    parent[b] = a;
+    return true;
+  }
+};
+
+UnionFind identified_vertices(const TemplatedMeshCompactSvb& t, const InstanceIndex& index) {
+  UnionFind uf(index.total_vertices);
+  for (const auto& id : t.identifications) {
+    const auto& table = t.tables[std::size_t(id.table)];
+    for (auto [from, to] : table.pairs)
+      uf.unite(index.first_vertex[std::size_t(id.from_instance)] + std::size_t(from),
+               index.first_vertex[std::size_t(id.to_instance)] + std::size_t(to));
+  }
+  return uf;
+}
+} // namespace
+
+bool TemplatedMeshCompactSvb::is_valid(std::ostream* why) const {
+  if (!templated.is_valid(why)) return false;
+  const InstanceIndex index(templated);
+  for (const auto& table : tables) {
+    const auto nt = templated.templates.size();
+    if (table.from_template < 0 || std::size_t(table.from_template) >= nt ||
+        table.to_template < 0 || std::size_t(table.to_template) >= nt) {
+      if (why) *why << "an identification table names a template out of range";
+      return false;
+    }
+    const auto nf = templated.templates[std::size_t(table.from_template)].mesh.vertex_count();
+    const auto nto = templated.templates[std::size_t(table.to_template)].mesh.vertex_count();
+    for (auto [a, b] : table.pairs)
+      if (a < 0 || std::size_t(a) >= nf || b < 0 || std::size_t(b) >= nto) {
+        if (why) *why << "an identification pair is out of range";
+        return false;
+      }
+  }
+  for (const auto& id : identifications) {
+    const auto n = index.template_of.size();
+    if (id.from_instance < 0 || std::size_t(id.from_instance) >= n || id.to_instance < 0 ||
+        std::size_t(id.to_instance) >= n || id.table < 0 ||
+        std::size_t(id.table) >= tables.size()) {
+      if (why) *why << "an instance identification is out of range";
+      return false;
+    }
+    const auto& table = tables[std::size_t(id.table)];
+    if (index.template_of[std::size_t(id.from_instance)] != std::size_t(table.from_template) ||
+        index.template_of[std::size_t(id.to_instance)] != std::size_t(table.to_template)) {
+      if (why) *why << "an instance identification uses a table of other templates";
+      return false;
+    }
+  }
+  return true;
+}
+
+StructureInstanceMesh assemble_structure_instance(const TemplatedMeshCompactSvb& t) {
+  const InstanceIndex index(t.templated);
+  UnionFind uf = identified_vertices(t, index);
+  const int n = t.templated.point_dimension;
+  StructureInstanceMesh out;
+  out.mesh.mesh.point_dimension = n;
+  std::vector<IndexType> global(index.total_vertices, -1);
+  std::size_t k = 0; // global instance number
+  std::vector<NumericType> x(std::size_t(n), 0.0);
+  for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
+    const auto& tm = t.templated.templates[i];
+    for (std::size_t g = 0; g < tm.instance_count(); ++g, ++k) {
+      const auto& f = t.templated.transformations[std::size_t(tm.transformation_indices[g])];
+      for (std::size_t v = 0; v < tm.mesh.vertex_count(); ++v) {
+        const std::size_t root = uf.find(index.first_vertex[k] + v);
+        if (global[root] < 0) {
+          f.apply(tm.mesh.vertex(v), x.data());
+          global[root] = out.mesh.mesh.add_vertex(x.data());
+        }
+      }
+      for (std::size_t c = 0; c < tm.mesh.cell_count(); ++c) {
+        std::array<IndexType, 4> cv{};
+        const int nv = vertex_count(tm.mesh.cell_types[c]);
+        for (int q = 0; q < nv; ++q)
+          cv[std::size_t(q)] =
+              global[uf.find(index.first_vertex[k] + std::size_t(tm.mesh.cell(c)[q]))];
+        out.mesh.mesh.add_cell(tm.mesh.cell_types[c], cv.data());
+        out.mesh.cell_region.push_back(tm.region_ids[g]);
+        out.cell_template.push_back(IndexType(i));
+        out.cell_instance.push_back(IndexType(k));
+      }
+    }
+  }
+  return out;
+}
+
+TemplatedMeshSvb to_listing_4_2(const TemplatedMeshCompactSvb& t) {
+  const InstanceIndex index(t.templated);
+  UnionFind uf = identified_vertices(t, index);
+  std::vector<std::size_t> class_size(index.total_vertices, 0);
+  for (std::size_t v = 0; v < index.total_vertices; ++v) class_size[uf.find(v)]++;
+  TemplatedMeshSvb out;
+  out.point_dimension = t.templated.point_dimension;
+  out.transformations = t.templated.transformations;
+  std::map<std::size_t, IndexType> global_of_class;
+  std::vector<NumericType> x(std::size_t(out.point_dimension), 0.0);
+  std::size_t k = 0;
+  for (const auto& tm : t.templated.templates) {
+    MeshTemplateSvb ts;
+    ts.mesh = tm.mesh;
+    for (std::size_t g = 0; g < tm.instance_count(); ++g, ++k) {
+      MeshInstanceSvb inst;
+      inst.transformation_index = tm.transformation_indices[g];
+      inst.region_id = tm.region_ids[g];
+      for (std::size_t v = 0; v < tm.mesh.vertex_count(); ++v) {
+        const std::size_t root = uf.find(index.first_vertex[k] + v);
+        if (class_size[root] < 2) continue;
+        auto [it, inserted] = global_of_class.emplace(root, IndexType(out.global_vertex_count()));
+        if (inserted) {
+          out.transformations[std::size_t(inst.transformation_index)].apply(tm.mesh.vertex(v),
+                                                                            x.data());
+          out.global_vertices.insert(out.global_vertices.end(), x.begin(), x.end());
+        }
+        inst.local_to_global_vertex_mapping.emplace_back(IndexType(v), it->second);
+      }
+      ts.instances.push_back(std::move(inst));
+    }
+    out.templates.push_back(std::move(ts));
+  }
+  return out;
+}
+
+} // namespace symmesh::mesh

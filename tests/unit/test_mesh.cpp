@@ -1,0 +1,76 @@
+// The mesh data structures (spec/mesh-data-structures.md): byte counts from the arrays against
+// Eq. 2.11/2.12, and the compact SVB against Listing 4.2 and the structure instance.
+#include <gtest/gtest.h>
+
+#include "symmesh/gen/templated_triangle_mesh.h"
+#include "symmesh/io/templated_structure_json.h"
+#include "symmesh/mesh/templated_mesh.h"
+
+#include <variant>
+
+using namespace symmesh;
+
+namespace {
+mesh::Mesh unit_square() {
+  mesh::Mesh m;
+  const double p[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const auto& q : p) m.add_vertex(q);
+  const mesh::IndexType a[3] = {0, 1, 2}, b[3] = {0, 2, 3};
+  m.add_cell(mesh::ElementType::triangle, a);
+  m.add_cell(mesh::ElementType::triangle, b);
+  return m;
+}
+} // namespace
+
+TEST(MeshBytes, MeshMatchesEq211AndMrMeshNeedsTheSwappedConstant) {
+  const mesh::Mesh m = unit_square();
+  ASSERT_TRUE(m.is_valid());
+  // 8n per vertex; per cell 1 type byte + 3 indices + 1 offset; plus the leading offset.
+  EXPECT_EQ(m.bytes(), 4u * 8 * 2 + 2u * (1 + 12 + 4) + 4);
+  EXPECT_LE(m.bytes(), mesh::eq_2_11_bound(4, 2, 2, 3));
+  mesh::MrMesh mr{m, {1, 1}};
+  ASSERT_TRUE(mr.is_valid());
+  EXPECT_EQ(mr.bytes(), 4u * 8 * 2 + 2u * (7 + 4 * 3) + 4);
+  // Eq. 2.12 as printed (5 + 4k) is below the MRMESH bytes: its 5 and Eq. 2.11's 7 are swapped.
+  EXPECT_GT(mr.bytes(), mesh::eq_2_12_bound(4, 2, 2, 3));
+  EXPECT_LE(mr.bytes(), mesh::eq_2_11_bound(4, 2, 2, 3) + 4);
+}
+
+TEST(MeshBytes, InvalidOffsetsAreReported) {
+  mesh::Mesh m = unit_square();
+  m.cell_vertex_index_offsets[1] = 2;
+  std::ostringstream why;
+  EXPECT_FALSE(m.is_valid(&why));
+  EXPECT_NE(why.str().find("vertex count"), std::string::npos);
+}
+
+TEST(CompactSvb, OctagonSlicesAgreeWithListing42AndTheStructureInstance) {
+  const auto x = std::get<io::CyclotomicStructure2>(
+      io::read_templated_structure(std::string(SYMMESH_SOURCE_DIR) + "/data/ngon_slice_8.json"));
+  gen::GenerationOptions o;
+  o.size = 0.1;
+  o.min_angle_deg = 25;
+  const auto r = gen::generate_templated_triangle_mesh(x, o);
+  ASSERT_TRUE(r.lemma_4_2_holds) << r.lemma_4_2_failure;
+  std::ostringstream why;
+  ASSERT_TRUE(r.templated.is_valid(&why)) << why.str();
+  // The 8 slice-to-slice pairs suffice; the 20 pairs meeting only at the centre are implied.
+  EXPECT_EQ(r.templated.identifications.size(), 8u);
+  const auto& t = r.templated.templated.templates.at(0);
+  const auto si = mesh::assemble_structure_instance(r.templated);
+  const auto svb = mesh::to_listing_4_2(r.templated);
+  ASSERT_TRUE(svb.is_valid(&why)) << why.str();
+  EXPECT_EQ(si.mesh.mesh.cell_count(), 8 * t.mesh.cell_count());
+  // Each side of the slice has s interior line points plus its outer corner; the centre is one.
+  std::size_t shared = 0;
+  for (const auto& inst : svb.templates[0].instances)
+    shared += inst.local_to_global_vertex_mapping.size();
+  const std::size_t per_instance = shared / 8;
+  EXPECT_EQ(shared % 8, 0u);
+  // 8 sides shared by two slices each (interior points + outer corner), plus the centre.
+  EXPECT_EQ(svb.global_vertex_count(), 8 * (per_instance - 1) / 2 + 1);
+  EXPECT_EQ(si.mesh.mesh.vertex_count(),
+            8 * t.mesh.vertex_count() - 8 * (per_instance - 1) / 2 - 7);
+  // Compact: far below Listing 4.2's pairs for the same identifications.
+  EXPECT_LT(r.templated.bytes(), svb.bytes());
+}
