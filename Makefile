@@ -2,7 +2,8 @@
 #   make demo : install deps, build Release, run the main job on a built-in example into out/
 #   make test : install deps, build, run every test (unit, proofs-checks, CLI end-to-end)
 #   make bench: build the benchmarks (Release, build-bench/), run them, write docs/benchmarks/
-#               (rotation composition and the Lemma 4.2 n-gon check, K_m vs CORE; ~15 min)
+#               (rotation composition and the Lemma 4.2 n-gon check, K_m vs CORE; 2D templated
+#               vs conventional generation, docs/benchmarks/2d.md)
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
@@ -29,9 +30,10 @@ test: build
 
 bench: deps
 	cmake -S . -B $(BENCH_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DSYMMESH_BUILD_TESTS=OFF -DSYMMESH_BUILD_BENCH=ON $(CMAKE_FLAGS)
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition bench_lemma42_ngon
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition bench_lemma42_ngon symmesh
 	bash bench/run_rotation_composition.sh $(BENCH_BUILD)/bench/bench_rotation_composition docs/benchmarks
 	bash bench/run_lemma42_ngon.sh $(BENCH_BUILD)/bench/bench_lemma42_ngon docs/benchmarks
+	/usr/bin/python3 bench/generate_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

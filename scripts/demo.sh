@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on built-in examples: check the Fig. 4.3 templated mesh and the Fig. 4.4
 # non-conforming structure, render instance graphs and boundary patch partitions (Figs 4.10,
-# 6.8, a 3D rotational slice), and spot-check the interface lemmas.
+# 6.8, a 3D rotational slice), spot-check the interface lemmas, and generate templated meshes of
+# built-in 2D objects.
 set -uo pipefail
 bin=${1:-build/symmesh}
 out=${2:-out}
@@ -22,6 +23,14 @@ run "$bin" bpp data/fig_4_10_partition.json -o "$out/fig_4_10_bpp.svg" || exit 1
 run "$bin" bpp data/fig_6_8_multiregion_rotational.json -o "$out/fig_6_8_bpp.svg" || exit 1
 run "$bin" bpp data/fig_6_8_multiregion_rotational.json -o "$out/fig_6_8_bpp.json" || exit 1
 run "$bin" bpp data/rotational_slice_3d.json -o "$out/rotational_slice_3d_bpp.vtu" || exit 1
+# Templated mesh generation (Algorithm 5.6) on built-in 2D objects: structure instance (.vtu,
+# .msh), templated mesh (.tmesh), report with byte counts, timings and quality.
+for name in ngon-sao-16 bridge mosfet star-reflective-rotational; do
+  run "$bin" example "$name" -o "$out/$name.json" || exit 1
+  run "$bin" generate "$out/$name.json" --size 0.05 --min-angle 25 -o "$out/$name.vtu" \
+    --templated "$out/$name.tmesh" --report "$out/$name.report.json" || exit 1
+done
+run "$bin" generate "$out/ngon-sao-16.json" --size 0.05 --min-angle 25 -o "$out/ngon-sao-16.msh" --quiet || exit 1
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"

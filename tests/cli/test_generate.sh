@@ -33,6 +33,18 @@ $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['cells_structu
 8 * r['cells_templates'] and r['instances'] == 8, r" "$TMP/octagon.json" \
   && pass "octagon: 8 instances of one slice template" || fail "octagon: cell counts"
 
+# The templated octagon and star meshes map onto themselves under their rotations (the SAO
+# centre is meshed once, without symmetry, by this method).
+for case in "octagon.vtu 8 1" "octagon.vtu 8 3" "star.vtu 5 1" "star.vtu 5 2"; do
+  set -- $case
+  if msg=$($PY tests/cli/symmetry_check.py "$TMP/$1" "$2" "$3" 2>&1); then
+    pass "$1 under rotation 2pi*$3/$2: $msg"; else fail "$1 under rotation 2pi*$3/$2: $msg"; fi
+done
+# The conventional octagon is not built from copies, so it is not symmetric: the check can fail.
+if $PY tests/cli/symmetry_check.py "$TMP/octagon_conventional.vtu" 8 1 > /dev/null 2>&1; then
+  fail "the symmetry check accepts the conventional (unsymmetric) octagon"; else
+  pass "the symmetry check rejects the conventional octagon"; fi
+
 if command -v gmsh > /dev/null; then
   if gmsh -check "$TMP/rotational_slice.msh" > "$TMP/gmsh.out" 2>&1 && \
      ! grep -qi "error" "$TMP/gmsh.out"; then pass "gmsh opens the .msh"; else

@@ -125,6 +125,38 @@ TEST(Predicates, TriangleEdgeLinesAgreeWithTheGeneralDecision) {
   EXPECT_GT(apart, 100);
 }
 
+// The closed-form plane barycentric coordinates: Σ μ_i b_i = x and Σ μ_i = 1 exactly, and "not in
+// the affine hull" exactly when x is off the segment's line.
+TEST(Predicates, PlaneBarycentricCoordinatesReproduceThePoint) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(-3, 3);
+  const auto point = [&] { return p2(coord(rng), coord(rng)); };
+  int on_line = 0, off_line = 0;
+  for (int k = 0; k < 2000; ++k) {
+    std::vector<P2> b{point(), point()};
+    if (k % 2 == 0) b.push_back(point());
+    if (!affinely_independent<Exact, 2>(b)) continue;
+    const P2 x = point();
+    const auto mu = barycentric<Exact, 2>(b, x);
+    if (b.size() == 2 && detail::orientation_sign<Exact>(b[0], b[1], x) != 0) {
+      EXPECT_FALSE(mu.has_value());
+      ++off_line;
+      continue;
+    }
+    ASSERT_TRUE(mu.has_value());
+    if (b.size() == 2) ++on_line;
+    Exact sum(0), px(0), py(0);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      sum += (*mu)[i];
+      px += (*mu)[i] * b[i][0];
+      py += (*mu)[i] * b[i][1];
+    }
+    EXPECT_TRUE(sum == 1 && px == x[0] && py == x[1]);
+  }
+  EXPECT_GT(on_line, 20);
+  EXPECT_GT(off_line, 100);
+}
+
 TEST(Predicates, TriangleEdgeLinesOnTouchingTriangles) {
   const std::vector<P2> a{p2(0, 0), p2(2, 0), p2(0, 2)};
   // Shared edge: interiors disjoint, closed sets meet.

@@ -3,9 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "symmesh/gen/templated_triangle_mesh.h"
+#include "symmesh/io/templated_mesh_file.h"
 #include "symmesh/io/templated_structure_json.h"
+#include "symmesh/mesh/quality.h"
 #include "symmesh/mesh/templated_mesh.h"
 
+#include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <variant>
 
 using namespace symmesh;
@@ -73,4 +78,50 @@ TEST(CompactSvb, OctagonSlicesAgreeWithListing42AndTheStructureInstance) {
             8 * t.mesh.vertex_count() - 8 * (per_instance - 1) / 2 - 7);
   // Compact: far below Listing 4.2's pairs for the same identifications.
   EXPECT_LT(r.templated.bytes(), svb.bytes());
+}
+
+TEST(Quality, RightIsoscelesTrianglesHave45DegreesAndRatioOneOverRootTwo) {
+  const auto q = mesh::triangle_quality(unit_square(), 50);
+  EXPECT_EQ(q.triangles, 2u);
+  EXPECT_NEAR(q.min_angle_deg, 45, 1e-12);
+  // R = hypotenuse/2 = sqrt(2)/2, shortest edge 1.
+  EXPECT_NEAR(q.max_radius_edge_ratio, std::sqrt(2.0) / 2, 1e-12);
+  EXPECT_EQ(q.histogram[9], 2u); // [45, 50)
+  EXPECT_EQ(q.below_bound, 2u);
+  EXPECT_EQ(mesh::triangle_quality(unit_square(), 45).below_bound, 0u);
+}
+
+TEST(TemplatedMeshFile, RoundTripIsExactAndBadFilesNameTheField) {
+  const auto x = std::get<io::Structure2>(io::read_templated_structure(
+      std::string(SYMMESH_SOURCE_DIR) + "/data/fig_6_7_rotational_slice.json"));
+  gen::GenerationOptions o;
+  o.size = 0.3;
+  const auto r = gen::generate_templated_triangle_mesh(x, o);
+  const std::string path = testing::TempDir() + "/round_trip.tmesh";
+  io::write_tmesh(r.templated, path);
+  const auto back = io::read_tmesh(path);
+  const auto& a = r.templated.templated.templates.at(0).mesh;
+  const auto& b = back.templated.templates.at(0).mesh;
+  EXPECT_EQ(a.vertex_coords, b.vertex_coords); // bit-identical doubles
+  EXPECT_EQ(a.cell_vertex_indices, b.cell_vertex_indices);
+  EXPECT_EQ(back.identifications.size(), r.templated.identifications.size());
+  EXPECT_EQ(back.bytes(), r.templated.bytes());
+  EXPECT_EQ(back.templated.transformations.at(1).matrix,
+            r.templated.templated.transformations.at(1).matrix);
+  // A cell index out of range is refused with the field's path.
+  std::ifstream is(path);
+  std::string text((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
+  const auto at = text.find("\"cells\":[[");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at + 10, 1, "999999");
+  const std::string bad = testing::TempDir() + "/bad.tmesh";
+  std::ofstream(bad) << text;
+  try {
+    io::read_tmesh(bad);
+    ADD_FAILURE() << "accepted an out-of-range cell index";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("templates[0].cells[0]"), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
+  std::remove(bad.c_str());
 }

@@ -1,9 +1,11 @@
 // symmesh generate GEOMETRY.json --size H [--min-angle A] [--method auto|bpp|conventional]
-//                  -o OUT.{vtu,msh,mesh} [--report REPORT.json] [--quiet]
+//                  -o OUT.{vtu,msh,mesh} [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/apps/commands.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/io/mesh_writers.h"
+#include "symmesh/io/templated_mesh_file.h"
+#include "symmesh/mesh/quality.h"
 #include "symmesh/io/templated_structure_json.h"
 
 #include <nlohmann/json.hpp>
@@ -21,7 +23,7 @@ namespace symmesh::apps {
 namespace {
 
 struct GenerateOptions {
-  std::string file, out, report, method = "auto";
+  std::string file, out, report, templated, method = "auto";
   double size = 0, min_angle = 20;
   bool quiet = false;
 };
@@ -30,23 +32,6 @@ std::size_t peak_rss_bytes() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return std::size_t(u.ru_maxrss) * 1024;
-}
-
-/// Smallest interior angle over all triangles, in degrees.
-double min_angle_deg(const mesh::Mesh& m) {
-  double best = 180;
-  for (std::size_t c = 0; c < m.cell_count(); ++c) {
-    const auto* v = m.cell(c);
-    for (int k = 0; k < 3; ++k) {
-      const double* a = m.vertex(std::size_t(v[k]));
-      const double* b = m.vertex(std::size_t(v[(k + 1) % 3]));
-      const double* p = m.vertex(std::size_t(v[(k + 2) % 3]));
-      const double ux = b[0] - a[0], uy = b[1] - a[1], wx = p[0] - a[0], wy = p[1] - a[1];
-      const double angle = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
-      best = std::min(best, angle * 180.0 / M_PI);
-    }
-  }
-  return best;
 }
 
 template <class FT>
@@ -116,6 +101,7 @@ int run_generate(const GenerateOptions& o) {
   const auto svb = mesh::to_listing_4_2(r.templated);
   const auto write_start = std::chrono::steady_clock::now();
   io::write_mesh_file(si, o.out);
+  if (!o.templated.empty()) io::write_tmesh(r.templated, o.templated);
   const double write_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
   std::size_t template_cells = 0;
@@ -141,7 +127,14 @@ int run_generate(const GenerateOptions& o) {
                             {"lemma_4_2_certificate", r.timings.certificate}};
   j["seconds_write"] = write_seconds;
   j["peak_rss_bytes"] = peak_rss_bytes();
-  j["min_angle_deg"] = min_angle_deg(si.mesh.mesh);
+  const auto q = mesh::triangle_quality(si.mesh.mesh, o.min_angle);
+  j["min_angle_deg"] = q.min_angle_deg;
+  j["quality"] = {{"triangles", q.triangles},
+                  {"min_angle_deg", q.min_angle_deg},
+                  {"max_radius_edge_ratio", q.max_radius_edge_ratio},
+                  {"below_min_angle", q.below_bound},
+                  {"min_angle_histogram_bin_deg", 5},
+                  {"min_angle_histogram", q.histogram}};
   j["lemma_4_2_holds"] = r.lemma_4_2_holds;
   if (!o.report.empty()) {
     std::ofstream os(o.report);
@@ -171,6 +164,8 @@ void add_generate(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", o->out, "structure instance: .vtu, .msh (4.1) or .mesh")
       ->required();
   cmd->add_option("--report", o->report, "JSON report: cell counts, bytes, seconds, quality");
+  cmd->add_option("--templated", o->templated,
+                  "also write the templated mesh (.tmesh, spec/outputs.md#tmesh)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines on stderr");
   cmd->callback([o, &exit_code] { exit_code = run_generate(*o); });
 }

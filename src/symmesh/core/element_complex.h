@@ -79,9 +79,44 @@ bool affinely_independent(const std::vector<Point<FT, D>>& p) {
 }
 
 /// Barycentric coordinates of x with respect to the simplex with vertices b, if x ∈ aff(b).
+namespace detail {
+/// (u × w) of plane vectors.
+template <class FT>
+FT cross_2(const Point<FT, 2>& u, const Point<FT, 2>& w) {
+  return u[0] * w[1] - u[1] * w[0];
+}
+
+/// barycentric() in the plane in closed form (Cramer's rule), for a point, a segment or a
+/// triangle with affinely independent vertices; nullopt = degenerate input, use the general
+/// solver. The interface and conformity tests ask this for every point near an interface.
+template <class FT>
+std::optional<std::optional<std::vector<FT>>> barycentric_2(const std::vector<Point<FT, 2>>& b,
+                                                            const Point<FT, 2>& x) {
+  using Result = std::optional<std::vector<FT>>;
+  if (b.size() == 1) return Result(b[0] == x ? Result(std::vector<FT>{FT(1)}) : std::nullopt);
+  const Point<FT, 2> u = b[1] - b[0], e = x - b[0];
+  if (b.size() == 2) {
+    const FT uu = dot<FT, 2>(u, u);
+    if (uu == 0) return std::nullopt;
+    if (cross_2<FT>(u, e) != 0) return Result(std::nullopt);
+    const FT t = dot<FT, 2>(e, u) / uu;
+    return Result(std::vector<FT>{FT(1) - t, t});
+  }
+  if (b.size() != 3) return std::nullopt;
+  const Point<FT, 2> w = b[2] - b[0];
+  const FT det = cross_2<FT>(u, w);
+  if (det == 0) return std::nullopt;
+  const FT s = cross_2<FT>(e, w) / det, t = cross_2<FT>(u, e) / det;
+  return Result(std::vector<FT>{FT(1) - s - t, s, t});
+}
+} // namespace detail
+
 template <class FT, int D>
 std::optional<std::vector<FT>> barycentric(const std::vector<Point<FT, D>>& b,
                                            const Point<FT, D>& x) {
+  if constexpr (D == 2) {
+    if (auto r = detail::barycentric_2<FT>(b, x)) return *r;
+  }
   const std::size_t m = b.size();
   Matrix<FT> a(D + 1, std::vector<FT>(m));
   std::vector<FT> rhs(D + 1);

@@ -5,6 +5,7 @@
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/gen/triangle_mesher.h"
+#include "symmesh/mesh/union_find.h"
 #include "symmesh/number/cyclotomic_cgal.h"
 
 #include <CGAL/Lazy_exact_nt.h>
@@ -134,22 +135,6 @@ mesh::Transformation to_double_transformation(const auto& t) {
   return out;
 }
 
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    parent[std::max(a, b)] = std::min(a, b);
-    return true;
-  }
-};
-
 /// Compact SVB: one table per distinct set of pairs, and a spanning set of instance pairs.
 template <class FT>
 void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
@@ -182,7 +167,7 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
   std::stable_sort(
       candidates.begin(), candidates.end(),
       [](const Candidate& a, const Candidate& b) { return a.pairs.size() > b.pairs.size(); });
-  UnionFind uf(vertices);
+  mesh::UnionFind uf(vertices);
   std::map<std::tuple<std::size_t, std::size_t,
                       std::vector<std::pair<mesh::IndexType, mesh::IndexType>>>,
            std::size_t>
@@ -312,15 +297,33 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   return r;
 }
 
+/// The conventional input: per region, the union of its instances (AT restricted to the region)
+/// as one geometry template instanced once, so that region boundaries stay mesh edges.
 template <class FT>
-core::TemplatedStructure<FT, 2> as_one_template(const core::TemplatedStructure<FT, 2>& x) {
+core::TemplatedStructure<FT, 2> as_region_templates(const core::TemplatedStructure<FT, 2>& x) {
   if (const auto overlap = core::find_instance_overlap(x))
     throw std::invalid_argument(core::overlap_message(*overlap));
-  const auto si = core::apply_template(x);
+  std::map<int, core::TemplatedStructure<FT, 2>> by_region;
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    for (const auto& inst : x.instances[i]) {
+      auto& part = by_region[inst.region];
+      std::size_t k = 0;
+      while (k < part.templates.size() && part.templates[k].name != x.templates[i].name) ++k;
+      if (k == part.templates.size()) {
+        part.templates.push_back(x.templates[i]);
+        part.instances.emplace_back();
+      }
+      part.instances[k].push_back(inst);
+    }
   core::TemplatedStructure<FT, 2> whole;
-  core::Template<FT, 2> t{"whole geometry", core::TemplateKind::geometry, si.at.mesh};
-  whole.templates.push_back(std::move(t));
-  whole.instances.push_back({core::InstanceSpec<FT, 2>{}});
+  for (const auto& [region, part] : by_region) {
+    const auto si = core::apply_template(part);
+    whole.templates.push_back(
+        {"region " + std::to_string(region), core::TemplateKind::geometry, si.at.mesh});
+    core::InstanceSpec<FT, 2> spec;
+    spec.region = region;
+    whole.instances.push_back({spec});
+  }
   return whole;
 }
 
@@ -342,12 +345,12 @@ generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotom
 }
 GenerationResult generate_conventional_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
                                                      const GenerationOptions& options) {
-  return generate(as_one_template(x), options);
+  return generate(as_region_templates(x), options);
 }
 GenerationResult
 generate_conventional_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
                                     const GenerationOptions& options) {
-  return generate(as_one_template(lazily(x)), options);
+  return generate(as_region_templates(lazily(x)), options);
 }
 
 } // namespace symmesh::gen

@@ -56,8 +56,9 @@ GenerationResult
 generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
                                  const GenerationOptions& options);
 
-/// The conventional baseline (Section 7.1): AT(X) as one template with one instance, meshed by
-/// the same line meshing and the same mesher with the same parameters.
+/// The conventional baseline (Section 7.1): per region, AT of that region's instances as one
+/// template with one instance, meshed by the same line meshing and the same mesher with the same
+/// parameters (region boundaries stay mesh edges).
 GenerationResult generate_conventional_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
                                                      const GenerationOptions& options);
 GenerationResult

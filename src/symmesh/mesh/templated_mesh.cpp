@@ -1,5 +1,6 @@
 // MESH/MRMESH and the templated mesh structures (spec/mesh-data-structures.md).
 #include "symmesh/mesh/templated_mesh.h"
+#include "symmesh/mesh/union_find.h"
 
 #include <map>
 #include <numeric>
@@ -134,24 +135,6 @@ struct InstanceIndex {
         first_vertex.push_back(total_vertices);
         total_vertices += t.templates[i].mesh.vertex_count();
       }
-  }
-};
-
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  /// Smaller representative wins, so classes are numbered by their first member.
-  bool unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    if (b < a) std::swap(a, b);
-    parent[b] = a;
-    return true;
   }
 };
 

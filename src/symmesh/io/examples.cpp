@@ -1,0 +1,243 @@
+// Built-in 2D templated geometries (spec/examples.md).
+#include "symmesh/io/examples.h"
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+namespace symmesh::io {
+namespace {
+using J = nlohmann::ordered_json;
+
+J point(const std::string& x, const std::string& y) {
+  return J::array({x, y});
+}
+J identity() {
+  return J{{"identity", J::object()}};
+}
+J translation(const std::string& x, const std::string& y) {
+  return J{{"translation", point(x, y)}};
+}
+J rotation(int order, int k) {
+  return J{{"rotation", J{{"order", order}, {"k", k}}}};
+}
+J compose(const J& outer, const J& inner) {
+  return J{{"compose", J::array({outer, inner})}};
+}
+/// Reflection in the line through the origin orthogonal to (nx, ny).
+J reflection(const std::string& nx, const std::string& ny) {
+  return J{{"reflection", J{{"normal", point(nx, ny)}}}};
+}
+J instance(const J& transformation, int region = 1) {
+  return J{{"transformation", transformation}, {"region", region}};
+}
+J geometry(const std::string& name, const J& polygon, const J& instances) {
+  return J{{"name", name}, {"kind", "geometry"}, {"polygon", polygon}, {"instances", instances}};
+}
+J document(const std::string& description, const J& templates) {
+  return J{{"symmesh", "templated-structure/1"},
+           {"dimension", 2},
+           {"description", description},
+           {"templates", templates}};
+}
+std::string cos_of(int k, int n) {
+  return "cos(2pi*" + std::to_string(k) + "/" + std::to_string(n) + ")";
+}
+std::string sin_of(int k, int n) {
+  return "sin(2pi*" + std::to_string(k) + "/" + std::to_string(n) + ")";
+}
+std::string scaled(const std::string& factor, const std::string& x) {
+  return factor + "*" + x;
+}
+
+// ------------------------------------------------------------------------------ n-gons
+
+J ngon_slices(int n) {
+  J inst = J::array();
+  for (int k = 0; k < n; ++k) inst.push_back(instance(rotation(n, k)));
+  const J slice = J::array({point("0", "0"), point("1", "0"), point(cos_of(1, n), sin_of(1, n))});
+  return document("Regular " + std::to_string(n) +
+                      "-gon of circumradius 1 as one slice template (the triangle between the "
+                      "rays at 0 and 2pi/" +
+                      std::to_string(n) + ") instanced by the " + std::to_string(n) +
+                      " rotations by 2pi*k/" + std::to_string(n) + ".",
+                  J::array({geometry("slice", slice, inst)}));
+}
+
+J ngon_sao(int n) {
+  J centre = J::array();
+  for (int k = 0; k < n; ++k)
+    centre.push_back(point(scaled("1/2", cos_of(k, n)), scaled("1/2", sin_of(k, n))));
+  const J ring = J::array({point("1/2", "0"), point("1", "0"), point(cos_of(1, n), sin_of(1, n)),
+                           point(scaled("1/2", cos_of(1, n)), scaled("1/2", sin_of(1, n)))});
+  J inst = J::array();
+  for (int k = 0; k < n; ++k) inst.push_back(instance(rotation(n, k)));
+  return document(
+      "Regular " + std::to_string(n) +
+          "-gon of circumradius 1 split by the small-angle optimisation (Section 6.3.2): a centre "
+          "n-gon of circumradius 1/2 instanced once, and a ring slice instanced by the n "
+          "rotations.",
+      J::array({geometry("centre", centre, J::array({instance(identity())})),
+                geometry("ring_slice", ring, inst)}));
+}
+
+// ------------------------------------------------------------------------------ star
+
+/// Inner vertex of the {5/2} star at angle 2pi*j/10 (j odd), radius cos(2pi/5)/cos(2pi/10).
+J star_inner(int j) {
+  const std::string r = "cos(2pi*1/5)/cos(2pi*1/10)";
+  return point(r + "*" + cos_of(j, 10), r + "*" + sin_of(j, 10));
+}
+
+J star_plain() {
+  J poly = J::array();
+  for (int k = 0; k < 5; ++k) {
+    poly.push_back(point(cos_of(k, 5), sin_of(k, 5)));
+    poly.push_back(star_inner(2 * k + 1));
+  }
+  return document("The five-pointed star {5/2} (tips on the unit circle) as one template with "
+                  "one instance: no symmetry used.",
+                  J::array({geometry("star", poly, J::array({instance(identity())}))}));
+}
+
+J star_rotational() {
+  const J point_piece = J::array({point("0", "0"), star_inner(9), point("1", "0"), star_inner(1)});
+  J inst = J::array();
+  for (int k = 0; k < 5; ++k) inst.push_back(instance(rotation(5, k)));
+  return document("The five-pointed star {5/2} as one point template (centre, inner vertex, tip, "
+                  "inner vertex) instanced by the 5 rotations by 2pi*k/5.",
+                  J::array({geometry("point", point_piece, inst)}));
+}
+
+J star_reflective_rotational() {
+  const J half = J::array({point("0", "0"), point("1", "0"), star_inner(1)});
+  J inst = J::array();
+  for (int k = 0; k < 5; ++k) {
+    inst.push_back(instance(rotation(5, k)));
+    inst.push_back(instance(compose(rotation(5, k), reflection("0", "1"))));
+  }
+  return document("The five-pointed star {5/2} in the form of Algorithm 6.5: one half-slice "
+                  "template (centre, tip, inner vertex) instanced by rot(2pi*k/5) and "
+                  "rot(2pi*k/5) o refl(x-axis), k = 0..4.",
+                  J::array({geometry("half_slice", half, inst)}));
+}
+
+// ------------------------------------------------------------------------------ mirrored
+
+J mirrored_pair(int region) {
+  return J::array({instance(identity(), region), instance(reflection("1", "0"), region)});
+}
+
+J mosfet() {
+  return document(
+      "A MOSFET-like device mirrored in the line x = 0: the right half is a substrate "
+      "(region 1), a drain well (region 2), a gate oxide (region 3) and a gate (region 4); each "
+      "piece is a template instanced by the identity and the reflection x -> -x.",
+      J::array({geometry("substrate",
+                         J::array({point("0", "0"), point("3", "0"), point("3", "3/2"),
+                                   point("1", "3/2"), point("1", "2"), point("0", "2")}),
+                         mirrored_pair(1)),
+                geometry("well",
+                         J::array({point("1", "3/2"), point("3", "3/2"), point("3", "2"),
+                                   point("1", "2")}),
+                         mirrored_pair(2)),
+                geometry("oxide",
+                         J::array({point("0", "2"), point("6/5", "2"), point("6/5", "21/10"),
+                                   point("0", "21/10")}),
+                         mirrored_pair(3)),
+                geometry("gate",
+                         J::array({point("0", "21/10"), point("1", "21/10"), point("1", "13/5"),
+                                   point("0", "13/5")}),
+                         mirrored_pair(4))}));
+}
+
+J aircraft() {
+  const J half =
+      J::array({point("0", "-3"), point("8/5", "-16/5"), point("8/5", "-14/5"),
+                point("2/5", "-11/5"), point("1/2", "3/5"), point("9/2", "1/5"),
+                point("9/2", "3/5"), point("3/5", "11/5"), point("2/5", "9/2"), point("0", "6")});
+  return document("An aircraft-like outline mirrored in the line x = 0 (sharp wing tips, tail "
+                  "and nose): the right half instanced by the identity and x -> -x.",
+                  J::array({geometry("half", half, mirrored_pair(1))}));
+}
+
+// ------------------------------------------------------------------------------ bridge
+
+J bridge() {
+  // Warren truss of unit beams: bottom nodes (i, 0), i = 0..8; top nodes (i + 1/2, sin 60°).
+  // Connectors: hexagons of apothem 1/10 with flat sides facing 0°, 60°, ...; beams: the
+  // rectangle [1/10, 9/10] x [-1/20, 1/20] along +x, whose ends lie on the hexagons' sides.
+  J hexagon = J::array();
+  const std::string r = "1/10/" + cos_of(1, 12);
+  for (int k = 0; k < 6; ++k)
+    hexagon.push_back(point(r + "*" + cos_of(2 * k + 1, 12), r + "*" + sin_of(2 * k + 1, 12)));
+  const J beam = J::array({point("1/10", "-1/20"), point("9/10", "-1/20"), point("9/10", "1/20"),
+                           point("1/10", "1/20")});
+  const std::string h = sin_of(1, 6);
+  const auto bottom = [](int i) { return std::to_string(i); };
+  const auto top = [](int i) { return std::to_string(2 * i + 1) + "/2"; };
+  J beams = J::array(), connectors = J::array();
+  for (int i = 0; i < 8; ++i) { // bottom chord, along 0°
+    beams.push_back(instance(translation(bottom(i), "0")));
+  }
+  for (int i = 0; i < 7; ++i) // top chord, from the right end node, turned by 180°
+    beams.push_back(instance(compose(translation(top(i + 1), h), rotation(6, 3))));
+  for (int i = 0; i < 8; ++i) { // diagonals at 60° and 120°
+    beams.push_back(instance(compose(translation(bottom(i), "0"), rotation(6, 1))));
+    beams.push_back(instance(compose(translation(bottom(i + 1), "0"), rotation(6, 2))));
+  }
+  for (int i = 0; i <= 8; ++i) connectors.push_back(instance(translation(bottom(i), "0"), 2));
+  for (int i = 0; i < 8; ++i) connectors.push_back(instance(translation(top(i), h), 2));
+  return document(
+      "A Warren-truss bridge beam (Section 7.4): 31 beams (region 1) and 17 hexagonal "
+      "connectors (region 2) as two templates, instanced by translations and "
+      "rotations by 60, 120 and 180 degrees. Exact in K_12.",
+      J::array({geometry("beam", beam, beams), geometry("connector", hexagon, connectors)}));
+}
+
+struct Entry {
+  std::string summary;
+  std::function<J()> make;
+};
+
+const std::vector<std::pair<std::string, Entry>>& registry() {
+  static const std::vector<std::pair<std::string, Entry>> r = [] {
+    std::vector<std::pair<std::string, Entry>> v;
+    for (int n : {5, 8, 16, 32, 64, 128}) {
+      v.push_back(
+          {"ngon-slice-" + std::to_string(n),
+           {"regular " + std::to_string(n) + "-gon, one slice, " + std::to_string(n) + " rotations",
+            [n] { return ngon_slices(n); }}});
+      v.push_back({"ngon-sao-" + std::to_string(n),
+                   {"regular " + std::to_string(n) + "-gon, centre + ring slice (Section 6.3.2)",
+                    [n] { return ngon_sao(n); }}});
+    }
+    v.push_back({"mosfet", {"MOSFET-like device, 4 regions, one mirror axis", mosfet}});
+    v.push_back({"aircraft", {"aircraft-like outline, one mirror axis, sharp angles", aircraft}});
+    v.push_back({"bridge", {"Warren truss: 31 beams, 17 connectors, 60/120/180 degrees", bridge}});
+    v.push_back({"star", {"five-pointed star, one template, no symmetry", star_plain}});
+    v.push_back({"star-rotational", {"five-pointed star, 5 rotated points", star_rotational}});
+    v.push_back(
+        {"star-reflective-rotational",
+         {"five-pointed star, 10 half-slices (Algorithm 6.5)", star_reflective_rotational}});
+    return v;
+  }();
+  return r;
+}
+} // namespace
+
+std::vector<ExampleInfo> example_list() {
+  std::vector<ExampleInfo> out;
+  for (const auto& [name, e] : registry()) out.push_back({name, e.summary});
+  return out;
+}
+
+nlohmann::ordered_json example_document(const std::string& name) {
+  for (const auto& [n, e] : registry())
+    if (n == name) return e.make();
+  std::string known;
+  for (const auto& [n, e] : registry()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown example '" + name + "' (known: " + known + ")");
+}
+
+} // namespace symmesh::io

@@ -1,0 +1,27 @@
+/// Element quality of triangle meshes (Definitions 2.12–2.20: smallest angle, radius-edge ratio)
+/// — spec/mesh-data-structures.md#quality
+///
+/// Statistics over all triangles: the smallest angle (its minimum and a histogram in 5° bins
+/// from 0° to 60°), the radius-edge ratio R/l_min (its maximum; an equilateral triangle has
+/// 1/√3), and how many triangles have a smallest angle below a requested bound.
+#pragma once
+#include "symmesh/mesh/mesh.h"
+
+#include <array>
+#include <cstddef>
+
+namespace symmesh::mesh {
+
+struct QualityStatistics {
+  std::size_t triangles = 0;
+  double min_angle_deg = 0;                ///< smallest angle of any triangle
+  double max_radius_edge_ratio = 0;        ///< largest circumradius / shortest edge
+  std::array<std::size_t, 12> histogram{}; ///< smallest angle per triangle, bins [5i, 5i+5)°
+  std::size_t below_bound = 0;             ///< triangles whose smallest angle < bound
+  double bound_deg = 0;
+};
+
+/// \pre every cell of m is a triangle
+QualityStatistics triangle_quality(const Mesh& m, double bound_deg);
+
+} // namespace symmesh::mesh
