@@ -37,16 +37,18 @@ def sizes_for(area, counts):
 
 
 def objects(quick):
+    import math
     counts = [1e3, 1e4] if quick else [1e3, 1e4, 1e5, 1e6]
+    small = counts if quick else counts[:-1]
     out = []
     for n in NGONS:
-        import math
         area = n / 2 * math.sin(2 * math.pi / n)
-        out.append((f"ngon-sao-{n}", n, sizes_for(area, counts)))
-    out.append(("bridge", 48, sizes_for(31 * 0.08 + 17 * 0.035, counts[:-1] if not quick else counts)))
-    out.append(("mosfet", 2, sizes_for(13.24, counts[:-1] if not quick else counts)))
-    out.append(("aircraft", 2, sizes_for(17.0, counts[:-1] if not quick else counts)))
-    out.append(("star-reflective-rotational", 10, sizes_for(1.12, counts[:-1] if not quick else counts)))
+        out.append((f"ngon-slice-{n}", n, sizes_for(area, counts)))
+    out.append(("ngon-sao-128", 128, sizes_for(math.pi, small)))
+    out.append(("bridge", 48, sizes_for(31 * 0.08 + 17 * 0.035, small)))
+    out.append(("mosfet", 2, sizes_for(13.24, small)))
+    out.append(("aircraft", 2, sizes_for(17.34, small)))
+    out.append(("star-reflective-rotational", 10, sizes_for(1.12, small)))
     return out
 
 
@@ -160,7 +162,7 @@ def plot(summary, outdir):
     fig, ax = plt.subplots(figsize=(6, 4))
     big = {}
     for s in summary:
-        if s["object"].startswith("ngon-sao-"):
+        if s["object"].startswith("ngon-slice-"):
             if s["order"] not in big or s["cells"] > big[s["order"]]["cells"]:
                 big[s["order"]] = s
     orders = sorted(big)
@@ -170,7 +172,7 @@ def plot(summary, outdir):
                        ("saving_bytes_templated_svb_compact", "memory saving, compact SVB")):
         ax.loglog(orders, [big[n][key] for n in orders], "o-", label=label)
     ax.loglog(orders, orders, "k--", label="symmetry order n")
-    ax.set_xlabel("symmetry order n (n-gon, SAO, largest size)")
+    ax.set_xlabel("symmetry order n (n-gon slices, largest size)")
     ax.set_ylabel("ratio")
     ax.legend(fontsize=7)
     fig.tight_layout()

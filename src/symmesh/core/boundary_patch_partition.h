@@ -75,7 +75,10 @@ struct BoundaryPatchPartition {
   std::vector<BoundaryPatch> patches;                   ///< ordered by template, then faces
   std::vector<std::vector<std::size_t>> classes;        ///< quotient set bndpart(X)/~ (sorted)
   std::vector<PatchArrow> arrows;                       ///< patch graph (one arrow per letter)
-  std::vector<std::optional<PatchArrow>> tree_parent;   ///< BFS tree of each class (root: none)
+  /// The automaton's transitions by letter: letter_action[m] lists (face f of the from-template,
+  /// face δ(f, m) of the to-template) for every face in the domain of mapping m, ordered by f.
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> letter_action;
+  std::vector<std::optional<PatchArrow>> tree_parent; ///< BFS tree of each class (root: none)
   std::optional<IrregularityWitness<FT, D>> irregularity;
 
   bool regular() const { return !irregularity.has_value(); }

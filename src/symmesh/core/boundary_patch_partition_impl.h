@@ -667,6 +667,7 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
   for (std::size_t t = 0; t < nt; ++t) offset[t + 1] = offset[t] + r.subdivisions[t].faces.size();
   const std::size_t ns = offset[nt];
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> delta(ns);
+  r.letter_action.resize(r.mappings.size());
   for (std::size_t m = 0; m < r.mappings.size(); ++m) {
     const auto& mp = r.mappings[m];
     const std::size_t s = mp.from_template(), d = mp.to_template();
@@ -687,6 +688,7 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
         g = it->second;
       }
       delta[offset[s] + f].emplace_back(m, offset[d] + g);
+      r.letter_action[m].emplace_back(f, g);
     }
   }
 

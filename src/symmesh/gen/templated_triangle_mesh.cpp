@@ -102,22 +102,26 @@ mapping_pairs(const core::BoundaryPatchPartition<FT, 2>& bpp, std::size_t letter
   const auto& src = bpp.subdivisions[j];
   const auto& dst = bpp.subdivisions[i];
   std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
-  for (std::size_t f = 0; f < src.faces.size(); ++f) {
-    const auto g = bpp.step({j, f}, letter);
-    if (!g) continue;
-    const auto& face = src.faces[f];
-    if (face.dimension == 0) {
-      pairs.emplace_back(mesh::IndexType(face.vertices[0]),
-                         mesh::IndexType(dst.faces[g->f].vertices[0]));
-      continue;
+  // The automaton's own transitions (no arithmetic): vertex faces first in the list, so the
+  // image of an edge's first vertex is known when the edge comes.
+  std::map<std::size_t, std::size_t> vertex_image;
+  for (auto [f, g] : bpp.letter_action[letter])
+    if (src.faces[f].dimension == 0) {
+      vertex_image[src.faces[f].vertices[0]] = dst.faces[g].vertices[0];
+      pairs.emplace_back(mesh::IndexType(src.faces[f].vertices[0]),
+                         mesh::IndexType(dst.faces[g].vertices[0]));
     }
+  for (auto [f, g] : bpp.letter_action[letter]) {
+    const auto& face = src.faces[f];
+    if (face.dimension != 1) continue;
     const auto& lf = boundaries[j].lines[f];
-    const auto& lg = boundaries[i].lines[g->f];
+    const auto& lg = boundaries[i].lines[g];
     if (lf.n != lg.n)
       throw std::logic_error("Algorithm 5.6: a mapping joins faces of different line meshes");
-    const auto image_of_first = bpp.step({j, face.vertices[0]}, letter);
-    const bool same_direction =
-        image_of_first && dst.faces[image_of_first->f].vertices[0] == dst.faces[g->f].vertices[0];
+    const auto it = vertex_image.find(face.vertices[0]);
+    if (it == vertex_image.end())
+      throw std::logic_error("Algorithm 5.6: a mapping applies to an edge but not to its end");
+    const bool same_direction = it->second == dst.faces[g].vertices[0];
     for (std::size_t k = 1; k < lf.n; ++k)
       pairs.emplace_back(mesh::IndexType(lf.first + k - 1),
                          mesh::IndexType(lg.first + (same_direction ? k - 1 : lf.n - k - 1)));
