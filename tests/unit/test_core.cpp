@@ -157,6 +157,36 @@ TEST(Predicates, PlaneBarycentricCoordinatesReproduceThePoint) {
   EXPECT_GT(off_line, 100);
 }
 
+// The plane fast paths for points, segments and triangles against the general decision.
+TEST(Predicates, PlaneSimplexPairsAgreeWithTheGeneralDecision) {
+  std::mt19937 rng(20261123);
+  std::uniform_int_distribution<int> coord(0, 3), size(1, 3);
+  const auto random_simplex = [&] {
+    for (;;) {
+      std::vector<P2> s;
+      const int n = size(rng);
+      for (int k = 0; k < n; ++k) s.push_back(p2(coord(rng), coord(rng)));
+      if (affinely_independent<Exact, 2>(s)) return s;
+    }
+  };
+  int meet = 0, apart = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const auto a = random_simplex(), b = random_simplex();
+    if (a.size() == 3 && b.size() == 3) continue;
+    bool general;
+    if (a.size() == 1 && b.size() == 1)
+      general = a[0] == b[0];
+    else if (weakly_separated<Exact, 2>(a, b))
+      general = false;
+    else
+      general = common_point<Exact, 2>({{a, true}, {b, true}}).strict_meet;
+    ASSERT_EQ((relative_interiors_meet<Exact, 2>(a, b)), general) << "case " << k;
+    (general ? meet : apart)++;
+  }
+  EXPECT_GT(meet, 100);
+  EXPECT_GT(apart, 100);
+}
+
 TEST(Predicates, TriangleEdgeLinesOnTouchingTriangles) {
   const std::vector<P2> a{p2(0, 0), p2(2, 0), p2(0, 2)};
   // Shared edge: interiors disjoint, closed sets meet.

@@ -245,6 +245,53 @@ std::optional<EdgeSeparation> triangles_separation(const std::vector<Point<FT, 2
   return EdgeSeparation{ab->weak || ba->weak, ba->strict};
 }
 
+/// relint(a) ∩ relint(b) ≠ ∅ in the plane for a point, segment or triangle against a segment or
+/// triangle, by orientation signs only (the separating axis theorem on the edge lines of both;
+/// for two segments, crossing or overlapping collinearly). nullopt for degenerate input and for
+/// two triangles (triangles_separation), which then take the general test.
+template <class FT>
+std::optional<bool> plane_relative_interiors_meet(const std::vector<Point<FT, 2>>& a,
+                                                  const std::vector<Point<FT, 2>>& b) {
+  if (a.size() > b.size()) return plane_relative_interiors_meet<FT>(b, a);
+  if (b.size() == 3) {
+    const int s = orientation_sign<FT>(b[0], b[1], b[2]);
+    if (s == 0 || a.size() == 3) return std::nullopt;
+    for (int e = 0; e < 3; ++e) { // a on the closed far side of an edge line of b
+      bool outside = true;
+      for (const auto& x : a)
+        outside = outside && orientation_sign<FT>(b[e], b[(e + 1) % 3], x) * s <= 0;
+      if (outside) return false;
+    }
+    if (a.size() == 1) return true;
+    if (a[0] == a[1]) return std::nullopt;
+    bool positive = false, negative = false; // b on one closed side of the line through a
+    for (const auto& x : b) {
+      const int o = orientation_sign<FT>(a[0], a[1], x);
+      positive = positive || o > 0;
+      negative = negative || o < 0;
+    }
+    return positive && negative;
+  }
+  if (b.size() != 2 || b[0] == b[1]) return std::nullopt;
+  const Point<FT, 2> u = b[1] - b[0];
+  if (a.size() == 1) {
+    if (orientation_sign<FT>(b[0], b[1], a[0]) != 0) return false;
+    return dot<FT, 2>(a[0] - b[0], u) > 0 && dot<FT, 2>(a[0] - b[1], u) < 0;
+  }
+  if (a.size() != 2 || a[0] == a[1]) return std::nullopt;
+  const int o1 = orientation_sign<FT>(b[0], b[1], a[0]),
+            o2 = orientation_sign<FT>(b[0], b[1], a[1]);
+  if (o1 == 0 && o2 == 0) { // collinear: the open parameter intervals along u overlap
+    const FT t0 = dot<FT, 2>(a[0] - b[0], u), t1 = dot<FT, 2>(a[1] - b[0], u);
+    const FT lo = CGAL::max(FT(0), CGAL::min(t0, t1)),
+             hi = CGAL::min(dot<FT, 2>(u, u), CGAL::max(t0, t1));
+    return lo < hi;
+  }
+  const int o3 = orientation_sign<FT>(a[0], a[1], b[0]),
+            o4 = orientation_sign<FT>(a[0], a[1], b[1]);
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
 template <class FT, int D>
 bool are_two_triangles_in_plane(const std::vector<Point<FT, D>>& a,
                                 const std::vector<Point<FT, D>>& b) {
@@ -295,6 +342,7 @@ bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
     // The common case of overlap and conformity tests: 6 edge lines instead of all candidates.
     if (detail::are_two_triangles_in_plane<FT, D>(a, b))
       if (const auto sep = detail::triangles_separation<FT>(a, b)) return !sep->weak;
+    if (const auto meet = detail::plane_relative_interiors_meet<FT>(a, b)) return *meet;
   }
   if (weakly_separated<FT, D>(a, b)) return false;
   if (a.size() == 1) {
