@@ -94,6 +94,68 @@ void figure_4_4(const GeneratedStructure<D>& s) {
   SYMMESH_PROOF_ASSERT(!core::structure_instance_conforming(si), record(s), picture(s));
 }
 
+/// spec/lemmas.md#lemma-4-2-boundary: with Eq. 4.2, Lemma 4.2 on the boundary complexes
+/// (what `symmesh generate` certifies with) gives the verdict of the direct check of AT(Γ).
+template <int D>
+void reduction_equals_direct(const GeneratedStructure<D>& s) {
+  const auto v = core::check_interface_conformity_on_boundaries(s.x);
+  const bool direct = core::structure_instance_conforming(core::apply_template(s.x));
+  RC_TAG(direct ? "AT conforming" : "AT not conforming");
+  SYMMESH_PROOF_ASSERT(v.holds == direct, record(s), picture(s));
+}
+
+template <int D>
+void boundary_reduction_agrees(const GeneratedStructure<D>& s) {
+  SYMMESH_PROOF_ASSERT(!core::find_instance_overlap(s.x).has_value(), record(s), picture(s));
+  reduction_equals_direct<D>(s);
+}
+
+/// Eq. 4.2 dropped: a triangulation and a small simplex strictly inside one of its cells (both
+/// instanced by the identity). The boundaries do not meet, so the reduction certifies, while
+/// AT(Γ) is not conforming.
+template <int D>
+rc::Gen<GeneratedStructure<D>> simplex_inside_a_cell() {
+  return rc::gen::exec([] {
+    const auto c = *rc::gen::suchThat(triangulation<D>(), [](const Described<Complex<D>>& t) {
+      return t.value.cell_dimension() == D;
+    });
+    const auto& m = c.value;
+    core::Simplex cell{};
+    for (const auto& e : m.elements)
+      if (e.dim() == D) {
+        cell = e;
+        break;
+      }
+    const auto corners = m.coords(cell);
+    Point<D> centroid;
+    for (int d = 0; d < D; ++d) {
+      Exact sum = 0;
+      for (const auto& q : corners) sum += q[d];
+      centroid[d] = sum / Exact(D + 1);
+    }
+    PointSet<D> inner;
+    for (const auto& q : corners) {
+      Point<D> r;
+      for (int d = 0; d < D; ++d) r[d] = centroid[d] + (q[d] - centroid[d]) / Exact(4);
+      inner.push_back(r);
+    }
+    GeneratedStructure<D> s;
+    s.x.templates.push_back({"mesh", core::TemplateKind::mesh, m});
+    s.x.templates.push_back({"inner simplex", core::TemplateKind::mesh, simplex_complex<D>(inner)});
+    s.x.instances = {{core::InstanceSpec<Exact, D>{}}, {core::InstanceSpec<Exact, D>{}}};
+    s.recipe = "a simplex shrunk by 1/4 inside a cell of " + c.recipe;
+    return s;
+  });
+}
+
+template <int D>
+void boundary_reduction_without_eq_4_2(const GeneratedStructure<D>& s) {
+  SYMMESH_PROOF_ASSERT(core::check_interface_conformity_on_boundaries(s.x).holds, record(s),
+                       picture(s));
+  SYMMESH_PROOF_ASSERT(!core::structure_instance_conforming(core::apply_template(s.x)), record(s),
+                       picture(s));
+}
+
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
@@ -135,6 +197,30 @@ void add(std::vector<Property>& p) {
        "Lemma 4.2 without (i) (Figure 4.4): a translated template whose interface side is "
        "subdivided differently; the checker reports condition (i) and AT is not conforming",
        [] { return rc::detail::toProperty([] { figure_4_4<D>(*figure_4_4_structure<D>()); }); },
+       {}});
+  p.push_back(
+      {kLemma, "boundary_reduction_agrees" + d, D, Kind::holds,
+       "Lemma 4.2 on the templates' boundary complexes (the generator's certificate): on "
+       "templated structures (Eq. 4.2) its verdict equals the direct conformity check of AT",
+       [] {
+         return rc::detail::toProperty(
+             [] { boundary_reduction_agrees<D>(*templated_structure<D>()); });
+       },
+       [] {
+         return rc::detail::toProperty(
+             [] { reduction_equals_direct<D>(*simplex_inside_a_cell<D>()); });
+       }});
+  p.push_back(
+      {kLemma,
+       "boundary_reduction_needs_eq_4_2" + d,
+       D,
+       Kind::counterexample,
+       "Without Eq. 4.2 the boundary reduction is unsound: a simplex strictly inside a cell "
+       "of another instance has disjoint boundaries (certified) but AT is not conforming",
+       [] {
+         return rc::detail::toProperty(
+             [] { boundary_reduction_without_eq_4_2<D>(*simplex_inside_a_cell<D>()); });
+       },
        {}});
 }
 

@@ -10,7 +10,13 @@ expect_exit 0 "Lemma 4.2 passes (40 cases)" -- "$BIN" lemmas --cases 40 --only L
 grep -qE '^[0-9]+ passed, 0 failed$' "$TMP/stdout" && pass "closing line" || fail "closing line missing"
 expect_exit 0 "dropped hypothesis of Lemma 4.2 is caught" -- "$BIN" lemmas --cases 40 --only Lemma_4_2 --drop-hypothesis --quiet --out "$TMP/ce"
 grep -q caught "$TMP/stdout" && ! grep -q MISSED "$TMP/stdout" && pass "every check caught" || fail "a dropped hypothesis was missed"
-ce=$(ls "$TMP"/ce/Lemma_4_2_*_dropped.json 2>/dev/null | head -1)
+ce=$(ls "$TMP"/ce/Lemma_4_2_sufficiency_2d_dropped.json 2>/dev/null | head -1)
+br="$TMP/ce/Lemma_4_2_boundary_reduction_agrees_2d_dropped.json"
+if [ -s "$br" ]; then
+  expect_exit 2 "the boundary-reduction counterexample overlaps (Eq. 4.2 dropped): check rejects it" -- "$BIN" check "$br"
+else
+  fail "no boundary-reduction counterexample written"
+fi
 if [ -n "$ce" ]; then
   pass "counterexample written: $(basename "$ce")"
   expect_exit 1 "symmesh check classifies the shrunk counterexample as not a templated mesh" -- "$BIN" check "$ce"

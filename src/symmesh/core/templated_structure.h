@@ -279,14 +279,21 @@ bool geometry_interface_nonempty(const StructureInstance<FT, D>& si, std::size_t
   // a number-field evaluation each.
   if (share_a_vertex(si.vertex_map[a], si.vertex_map[b])) return true;
   const auto& m = si.at.mesh;
-  const int cd = D;
+  // The closed top-dimensional elements cover a pure complex; templates may be boundary
+  // complexes of dimension D - 1 (interface_conformity.h, boundary_structure).
+  const auto top = [&](std::size_t k) {
+    int d = 0;
+    for (const auto& s : si.instance_elements[k]) d = std::max(d, s.dim());
+    return d;
+  };
+  const int cd = top(a), cdb = top(b);
   for (const auto& s : si.instance_elements[a]) {
     if (s.dim() != cd) continue;
     const auto sp = m.coords(s);
     const auto sb = box_of<FT, D>(sp);
     if (!sb.overlaps(si.instance_box[b])) continue;
     for (const auto& t : si.instance_elements[b]) {
-      if (t.dim() != cd) continue;
+      if (t.dim() != cdb) continue;
       const auto tp = m.coords(t);
       if (!sb.overlaps(box_of<FT, D>(tp))) continue;
       if (closed_simplices_meet<FT, D>(sp, tp)) return true;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <cstdint>
 #include <sstream>
 #include <tuple>
 
@@ -193,45 +194,67 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
   }
 }
 
-/// Lemma 4.2 on the boundary layers (triangles with a boundary vertex) in exact arithmetic.
-/// Instance interfaces lie on template boundaries and every boundary element's triangles are in
-/// the layer, so the layers' interfaces are the templates' interfaces.
+/// The mesh template's boundary edges (edges of exactly one triangle) are exactly the line
+/// mesh's segments: then bnd(X_i) is the line mesh, with its exact points. Combinatorial only.
+bool boundary_is_line_mesh(const mesh::Mesh& m, const BoundaryInput& in, std::string* why) {
+  // Sorted edge keys rather than a map: a template has up to millions of triangles.
+  const auto key = [](std::size_t a, std::size_t b) {
+    return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
+  };
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * m.cell_count());
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    const auto* v = m.cell(c);
+    for (int k = 0; k < 3; ++k)
+      edges.push_back(key(std::size_t(v[k]), std::size_t(v[(k + 1) % 3])));
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::uint64_t> boundary, segments;
+  for (std::size_t k = 0; k < edges.size();) {
+    std::size_t run = k;
+    while (run < edges.size() && edges[run] == edges[k]) ++run;
+    if (run - k == 1) boundary.push_back(edges[k]);
+    k = run;
+  }
+  for (const auto& s : in.segments) segments.push_back(key(s[0], s[1]));
+  std::sort(segments.begin(), segments.end());
+  if (boundary == segments) return true;
+  if (why)
+    *why = "the mesh template's boundary (" + std::to_string(boundary.size()) +
+           " edges) is not its line mesh (" + std::to_string(segments.size()) + " segments)";
+  return false;
+}
+
+/// Lemma 4.2, exactly, on the templates' boundary complexes (spec/lemmas.md#lemma-4-2-boundary):
+/// the instances' interiors are disjoint (checked before meshing), so every non-conformity of
+/// AT lies between transformed boundary elements. Each boundary complex is the line mesh with
+/// its exact points, after checking that the mesher kept it as the template's boundary.
 template <class FT>
 core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
                              const std::vector<TemplateBoundary<FT>>& boundaries,
                              const mesh::TemplatedMesh& tm) {
-  core::TemplatedStructure<FT, 2> layers;
+  core::TemplatedStructure<FT, 2> bnd;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     const auto& b = boundaries[i];
-    const auto& m = tm.templates[i].mesh;
-    const std::size_t boundary_count = b.exact_points.size();
-    core::Template<FT, 2> t{x.templates[i].name, core::TemplateKind::mesh, {}};
-    std::map<std::size_t, core::VertexId> local;
-    const auto vertex = [&](std::size_t v) {
-      auto [it, inserted] = local.emplace(v, core::VertexId(t.mesh.points.size()));
-      if (inserted)
-        t.mesh.points.push_back(v < boundary_count
-                                    ? b.exact_points[v]
-                                    : core::Point<FT, 2>{{exact_from_double<FT>(m.vertex(v)[0]),
-                                                          exact_from_double<FT>(m.vertex(v)[1])}});
-      return it->second;
-    };
-    for (std::size_t c = 0; c < m.cell_count(); ++c) {
-      const auto* cv = m.cell(c);
-      if (std::size_t(cv[0]) >= boundary_count && std::size_t(cv[1]) >= boundary_count &&
-          std::size_t(cv[2]) >= boundary_count)
-        continue;
-      t.mesh.elements.push_back(core::Simplex{
-          vertex(std::size_t(cv[0])), vertex(std::size_t(cv[1])), vertex(std::size_t(cv[2]))});
+    std::string why;
+    if (!boundary_is_line_mesh(tm.templates[i].mesh, b.input, &why)) {
+      core::Lemma42Verdict v;
+      v.holds = false;
+      v.a = v.b = core::InstanceId{i, 0};
+      v.detail = "template '" + x.templates[i].name + "': " + why;
+      return v;
     }
+    core::Template<FT, 2> t{x.templates[i].name, core::TemplateKind::mesh, {}};
+    t.mesh.points = b.exact_points;
+    for (const auto& s : b.input.segments)
+      t.mesh.elements.push_back(core::Simplex{core::VertexId(s[0]), core::VertexId(s[1])});
     t.mesh.normalize();
     t.mesh = core::face_completion(t.mesh);
     t.mesh.normalize();
-    layers.templates.push_back(std::move(t));
-    layers.instances.push_back(x.instances[i]);
+    bnd.templates.push_back(std::move(t));
+    bnd.instances.push_back(x.instances[i]);
   }
-  const auto si = core::apply_template(layers);
-  return core::check_interface_conformity(layers, si);
+  return core::check_interface_conformity(bnd, core::apply_template(bnd));
 }
 
 template <class FT>

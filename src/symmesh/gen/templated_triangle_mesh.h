@@ -11,7 +11,7 @@
 /// identified combinatorially: a mapping sends face f to face g and the k-th point of f to the
 /// k-th or (N-k)-th point of g, which gives the compact SVB tables (templated_mesh.h).
 /// Afterwards the Lemma 4.2 checker certifies the result in exact arithmetic on the templates'
-/// boundary layers (the triangles with a boundary vertex).
+/// boundary complexes (spec/lemmas.md#lemma-4-2-boundary).
 #pragma once
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/templated_structure.h"
