@@ -10,6 +10,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev librapidcheck-dev
   libgraphviz-dev graphviz
   libcli11-dev nlohmann-json3-dev
+  libgmsh-dev gmsh
   python3-meshio python3-matplotlib
 )
 

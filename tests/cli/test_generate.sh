@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # symmesh generate (spec/generation.md): Algorithm 5.6 and the conventional baseline on built-in
 # geometries over the rationals and K_m; outputs read back by meshio (cell count as reported,
-# conforming, area of the geometry), .msh opened by gmsh when it is installed, byte-identical
+# conforming, area of the geometry), the Gmsh baseline, .msh opened by gmsh, byte-identical
 # reruns, and bad input refused with exit 2 and no file.
 source "$(dirname "$0")/common.sh" "$@"
 PY=/usr/bin/python3
@@ -14,7 +14,7 @@ generate() {
     fail "$name: generate failed"; sed 's/^/  | /' "$TMP/err"; return; fi
   grep -q "symmesh generate: .*\[.* s\]" "$TMP/err" || fail "$name: no progress line on stderr"
   if msg=$($PY tests/cli/structure_instance_checks.py "$out" "$TMP/$name.json" "$area" 2>&1); then
-    pass "$name ($method, .$ext): $msg"; else fail "$name: $msg"; fi
+    pass "$name ($method, .$ext): $(echo "$msg" | tail -1)"; else fail "$name: $msg"; fi
   $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['lemma_4_2_holds'] and \
 r['bytes_templated'] <= r['bytes_templated_svb_compact'] and r['min_angle_deg'] > 0, r" \
     "$TMP/$name.json" || fail "$name: report fields"
@@ -27,6 +27,8 @@ generate octagon data/ngon_slice_8.json 2.8284271247461907 bpp vtu
 generate sao16 data/ngon_sao_16.json 3.0614674589207187 bpp msh
 generate star data/star_5_half_slices.json 1.1225699414489640 bpp vtu
 generate octagon_conventional data/ngon_slice_8.json 2.8284271247461907 conventional vtu
+generate octagon_gmsh data/ngon_slice_8.json 2.8284271247461907 gmsh vtu
+generate star_gmsh data/star_5_half_slices.json 1.1225699414489640 gmsh msh
 
 # The templated mesh of the octagon is one slice: 8 instances share its triangles.
 $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['cells_structure_instance'] == \
@@ -45,11 +47,14 @@ if $PY tests/cli/symmetry_check.py "$TMP/octagon_conventional.vtu" 8 1 > /dev/nu
   fail "the symmetry check accepts the conventional (unsymmetric) octagon"; else
   pass "the symmetry check rejects the conventional octagon"; fi
 
-if command -v gmsh > /dev/null; then
-  if gmsh -check "$TMP/rotational_slice.msh" > "$TMP/gmsh.out" 2>&1 && \
-     ! grep -qi "error" "$TMP/gmsh.out"; then pass "gmsh opens the .msh"; else
-    fail "gmsh cannot open the .msh"; sed 's/^/  | /' "$TMP/gmsh.out" | tail -5; fi
-fi
+# gmsh opens every .msh written, with as many elements as the report says and no duplicates.
+for name in rotational_slice sao16 star_gmsh; do
+  cells=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['cells_structure_instance'])" "$TMP/$name.json")
+  if gmsh -check "$TMP/$name.msh" > "$TMP/gmsh.out" 2>&1 && grep -q "Info *: $cells elements" "$TMP/gmsh.out" && \
+     ! grep -qiE "error|duplicate (nodes|elements) found|warning" "$TMP/gmsh.out"; then
+    pass "gmsh opens $name.msh: $cells elements, no duplicates"; else
+    fail "gmsh on $name.msh"; sed 's/^/  | /' "$TMP/gmsh.out" | tail -5; fi
+done
 
 # Determinism: the same input and options give the same bytes.
 "$BIN" generate data/ngon_sao_16.json --size 0.08 --min-angle 25 -o "$TMP/again.msh" --quiet
@@ -63,6 +68,8 @@ expect_exit 2 "mesh templates instead of a geometry" -- "$BIN" generate data/fig
 grep -q "geometry templates" "$TMP/stderr" && pass "message names the template kind" || fail "message: $(cat "$TMP/stderr")"
 [ ! -e "$TMP/bad2.vtu" ] && pass "no file for mesh templates" || fail "file written for mesh templates"
 expect_exit 2 "overlapping instances" -- "$BIN" generate tests/data/bad/overlapping_instances.json --size 0.1 -o "$TMP/bad3.vtu"
-expect_exit 2 "unknown method" -- "$BIN" generate data/ngon_slice_8.json --size 0.1 --method gmsh -o "$TMP/bad4.vtu"
+expect_exit 2 "unknown method" -- "$BIN" generate data/ngon_slice_8.json --size 0.1 --method frobnicate -o "$TMP/bad4.vtu"
+grep -q "frobnicate" "$TMP/stderr" && pass "message names the method" || fail "message: $(cat "$TMP/stderr")"
+[ ! -e "$TMP/bad4.vtu" ] && pass "no file for an unknown method" || fail "file written for an unknown method"
 expect_exit 2 "malformed JSON" -- "$BIN" generate tests/data/bad/malformed.json --size 0.1 -o "$TMP/bad5.vtu"
 finish

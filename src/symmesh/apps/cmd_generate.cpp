@@ -1,4 +1,4 @@
-// symmesh generate GEOMETRY.json --size H [--min-angle A] [--method auto|bpp|conventional]
+// symmesh generate GEOMETRY.json --size H [--min-angle A] [--method auto|bpp|conventional|gmsh]
 //                  -o OUT.{vtu,msh,mesh} [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/apps/commands.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
@@ -38,6 +38,7 @@ template <class FT>
 gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const GenerateOptions& o,
                                  const gen::GenerationOptions& g) {
   if (o.method == "conventional") return gen::generate_conventional_triangle_mesh(x, g);
+  if (o.method == "gmsh") return gen::generate_gmsh_triangle_mesh(x, g);
   return gen::generate_templated_triangle_mesh(x, g);
 }
 
@@ -46,9 +47,16 @@ int run_generate(const GenerateOptions& o) {
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  if (o.method != "auto" && o.method != "bpp" && o.method != "conventional") {
+  if (o.method == "reflective" || o.method == "rotational" || o.method == "sao" ||
+      o.method == "combined") {
     print_error("--method " + o.method +
-                ": not implemented yet (this version has auto, bpp and conventional)");
+                ": not implemented yet (this version has auto, bpp, conventional and gmsh)");
+    return bad_input;
+  }
+  if (o.method != "auto" && o.method != "bpp" && o.method != "conventional" && o.method != "gmsh") {
+    print_error("--method " + o.method +
+                ": unknown (use auto, bpp, reflective, rotational, sao, combined, conventional "
+                "or gmsh)");
     return bad_input;
   }
   const std::string ext = std::filesystem::path(o.out).extension().string();
@@ -107,7 +115,7 @@ int run_generate(const GenerateOptions& o) {
   std::size_t template_cells = 0;
   for (const auto& t : r.templated.templated.templates) template_cells += t.mesh.cell_count();
   nlohmann::ordered_json j;
-  j["method"] = o.method == "conventional" ? "conventional" : "bpp";
+  j["method"] = o.method == "auto" ? "bpp" : o.method;
   j["size"] = o.size;
   j["min_angle_requested_deg"] = o.min_angle;
   j["cells_structure_instance"] = si.mesh.mesh.cell_count();
@@ -153,14 +161,18 @@ void add_generate(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<GenerateOptions>();
   auto* cmd = app.add_subcommand(
       "generate", "Generate a 2D templated triangle mesh of a templated geometry (Algorithm 5.6 "
-                  "over the boundary patch partition) or the conventional baseline, certify it "
+                  "over the boundary patch partition) or a conventional baseline, certify it "
                   "with Lemma 4.2 and write the structure instance. Exit 0: written; 1: the "
                   "certificate failed (nothing written); 2: bad input.");
   cmd->add_option("file", o->file, "templated-geometry JSON (spec/input-format.md)")->required();
   cmd->add_option("--size", o->size, "target edge length")->required();
   cmd->add_option("--min-angle", o->min_angle, "smallest angle in degrees, at most 33.8")
       ->capture_default_str();
-  cmd->add_option("--method", o->method, "auto|bpp|conventional")->capture_default_str();
+  cmd->add_option("--method", o->method,
+                  "auto|bpp (Algorithm 5.6), conventional (same mesher on the whole geometry), "
+                  "gmsh (Gmsh 2D Delaunay on the whole geometry); reflective|rotational|sao|"
+                  "combined are not implemented yet")
+      ->capture_default_str();
   cmd->add_option("-o,--output", o->out, "structure instance: .vtu, .msh (4.1) or .mesh")
       ->required();
   cmd->add_option("--report", o->report, "JSON report: cell counts, bytes, seconds, quality");

@@ -4,6 +4,7 @@
 
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/interface_conformity.h"
+#include "symmesh/gen/gmsh_mesher.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/mesh/union_find.h"
 #include "symmesh/number/cyclotomic_cgal.h"
@@ -354,12 +355,123 @@ core::TemplatedStructure<FT, 2> as_region_templates(const core::TemplatedStructu
   return whole;
 }
 
+/// The Gmsh peer (spec/generation.md#gmsh): the regions of AT (exact, merged by exact point
+/// equality) rounded once and meshed by Gmsh as a whole; one template per region, instanced
+/// once, with the nodes Gmsh shares between regions as the SVB. Gmsh is not certified in exact
+/// arithmetic: `lemma_4_2_holds` states that every region boundary edge is matched node for node
+/// by a neighbouring region or lies on the outer boundary (combinatorial).
+template <class FT>
+GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
+                               const GenerationOptions& o) {
+  if (!(o.size > 0) || !std::isfinite(o.size))
+    throw std::invalid_argument("--size must be a positive number");
+  std::ostringstream why;
+  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  const auto whole = as_region_templates(x);
+  PlanarRegions in;
+  std::map<core::Point<FT, 2>, std::size_t, core::PointLess<FT, 2>> index;
+  std::map<std::pair<std::size_t, std::size_t>, int> edge_use;
+  for (std::size_t t = 0; t < whole.templates.size(); ++t) {
+    PlanarRegions::Region region;
+    region.id = whole.instances[t][0].region;
+    const auto bnd = core::mesh_boundary(whole.templates[t].mesh);
+    for (const auto& e : bnd.elements) {
+      if (e.dim() != 1) continue;
+      std::array<std::size_t, 2> ends{};
+      for (int k = 0; k < 2; ++k) {
+        const auto& p = bnd.points[e.v[k]];
+        auto [it, inserted] = index.emplace(p, in.points.size());
+        if (inserted) in.points.push_back({CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+        ends[std::size_t(k)] = it->second;
+      }
+      region.edges.push_back(ends);
+      ++edge_use[std::minmax(ends[0], ends[1])];
+    }
+    in.regions.push_back(std::move(region));
+  }
+  GenerationResult r;
+  const auto t0 = Clock::now();
+  const auto g = mesh_with_gmsh(in, o.size);
+  r.timings.template_meshing = seconds_since(t0);
+  auto& tm = r.templated.templated;
+  tm.point_dimension = 2;
+  std::vector<std::map<std::size_t, mesh::IndexType>> local(in.regions.size());
+  for (std::size_t t = 0; t < in.regions.size(); ++t) {
+    mesh::MeshTemplate mt;
+    mt.mesh.point_dimension = 2;
+    for (const auto& tri : g.triangles[t]) {
+      mesh::IndexType v[3];
+      for (int k = 0; k < 3; ++k) {
+        auto [it, inserted] = local[t].emplace(tri[std::size_t(k)], 0);
+        if (inserted) it->second = mt.mesh.add_vertex(g.nodes[tri[std::size_t(k)]].data());
+        v[k] = it->second;
+      }
+      mt.mesh.add_cell(mesh::ElementType::triangle, v);
+    }
+    mt.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
+    mt.region_ids.push_back(mesh::RegionIdType(in.regions[t].id));
+    mesh::Transformation identity;
+    identity.matrix = {1, 0, 0, 1};
+    identity.translation = {0, 0};
+    tm.transformations.push_back(identity);
+    if (o.progress)
+      o.progress("gmsh: region " + std::to_string(in.regions[t].id) + ": " +
+                 std::to_string(mt.mesh.cell_count()) + " triangles");
+    tm.templates.push_back(std::move(mt));
+  }
+  // SVB from the shared node numbers, one table per pair of regions that share nodes.
+  for (std::size_t a = 0; a < local.size(); ++a)
+    for (std::size_t b = a + 1; b < local.size(); ++b) {
+      std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
+      for (const auto& [node, la] : local[a])
+        if (const auto it = local[b].find(node); it != local[b].end())
+          pairs.emplace_back(la, it->second);
+      if (pairs.empty()) continue;
+      r.templated.identifications.push_back(
+          {mesh::IndexType(a), mesh::IndexType(b), mesh::IndexType(r.templated.tables.size())});
+      r.templated.tables.push_back({mesh::IndexType(a), mesh::IndexType(b), std::move(pairs)});
+    }
+  // Every input boundary edge of two regions must be split into the same nodes on both sides:
+  // count the mesh boundary edges per region and match them by node numbers.
+  std::map<std::pair<std::size_t, std::size_t>, int> mesh_boundary_use;
+  for (std::size_t t = 0; t < g.triangles.size(); ++t) {
+    std::map<std::pair<std::size_t, std::size_t>, int> count;
+    for (const auto& tri : g.triangles[t])
+      for (int k = 0; k < 3; ++k)
+        ++count[std::minmax(tri[std::size_t(k)], tri[std::size_t((k + 1) % 3)])];
+    for (const auto& [e, c] : count)
+      if (c == 1) ++mesh_boundary_use[e];
+  }
+  std::size_t unmatched = 0, outer_inputs = 0;
+  for (const auto& [e, c] : edge_use)
+    if (c == 1) ++outer_inputs;
+  std::size_t outer_mesh = 0;
+  for (const auto& [e, c] : mesh_boundary_use) {
+    if (c == 1) ++outer_mesh;
+    if (c > 2) ++unmatched;
+  }
+  r.lemma_4_2_holds = unmatched == 0 && outer_mesh >= outer_inputs;
+  if (!r.lemma_4_2_holds)
+    r.lemma_4_2_failure = "Gmsh's region meshes do not share their interface nodes";
+  return r;
+}
+
 core::TemplatedStructure<LazyCyclotomic, 2>
 lazily(const core::TemplatedStructure<number::Cyclotomic, 2>& x) {
   return core::convert_numbers<LazyCyclotomic>(
       x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
 }
 } // namespace
+
+GenerationResult generate_gmsh_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                             const GenerationOptions& options) {
+  return generate_gmsh(x, options);
+}
+GenerationResult
+generate_gmsh_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                            const GenerationOptions& options) {
+  return generate_gmsh(lazily(x), options);
+}
 
 GenerationResult generate_templated_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
                                                   const GenerationOptions& options) {

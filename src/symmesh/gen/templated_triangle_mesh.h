@@ -65,4 +65,12 @@ GenerationResult
 generate_conventional_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
                                     const GenerationOptions& options);
 
+/// The Gmsh peer (spec/generation.md#gmsh): the whole geometry, per region, meshed by Gmsh's 2D
+/// Delaunay at the same size (no smallest-angle parameter in Gmsh).
+GenerationResult generate_gmsh_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                             const GenerationOptions& options);
+GenerationResult
+generate_gmsh_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                            const GenerationOptions& options);
+
 } // namespace symmesh::gen

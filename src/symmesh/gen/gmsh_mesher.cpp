@@ -1,0 +1,166 @@
+// The Gmsh peer baseline — spec/generation.md#gmsh
+#include "symmesh/gen/gmsh_mesher.h"
+
+#include "symmesh/gen/triangle_mesher.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace symmesh::gen {
+namespace {
+
+using Loop = std::vector<std::size_t>; // vertex ids around a closed curve
+
+/// Splits a region's boundary edges into closed curves; a vertex of degree other than 2 is a
+/// pinched or open outline, which Gmsh's plane surfaces cannot take.
+std::vector<Loop> closed_curves(const PlanarRegions::Region& r) {
+  std::map<std::size_t, std::vector<std::size_t>> next;
+  for (const auto& e : r.edges) {
+    next[e[0]].push_back(e[1]);
+    next[e[1]].push_back(e[0]);
+  }
+  for (const auto& [v, n] : next)
+    if (n.size() != 2)
+      throw MeshingError("Gmsh baseline: region " + std::to_string(r.id) + ": boundary vertex " +
+                         std::to_string(v) + " has " + std::to_string(n.size()) +
+                         " boundary edges (need 2)");
+  std::map<std::size_t, bool> seen;
+  std::vector<Loop> loops;
+  for (const auto& [start, unused] : next) {
+    if (seen[start]) continue;
+    Loop loop{start};
+    seen[start] = true;
+    std::size_t prev = start, cur = next[start][0];
+    while (cur != start) {
+      loop.push_back(cur);
+      seen[cur] = true;
+      const auto& n = next[cur];
+      const std::size_t to = n[0] == prev ? n[1] : n[0];
+      prev = cur;
+      cur = to;
+    }
+    loops.push_back(loop);
+  }
+  return loops;
+}
+
+double signed_area(const std::vector<std::array<double, 2>>& p, const Loop& l) {
+  double a = 0;
+  for (std::size_t k = 0; k < l.size(); ++k) {
+    const auto& u = p[l[k]];
+    const auto& v = p[l[(k + 1) % l.size()]];
+    a += u[0] * v[1] - v[0] * u[1];
+  }
+  return a / 2;
+}
+
+/// Even-odd test; the loops of one region are vertex-disjoint, so a vertex of one loop is never
+/// on another.
+bool inside(const std::vector<std::array<double, 2>>& p, const Loop& l, std::array<double, 2> q) {
+  bool in = false;
+  for (std::size_t k = 0, j = l.size() - 1; k < l.size(); j = k++) {
+    const auto& a = p[l[k]];
+    const auto& b = p[l[j]];
+    if ((a[1] > q[1]) != (b[1] > q[1]) &&
+        q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0])
+      in = !in;
+  }
+  return in;
+}
+
+/// Gmsh's API state is global: initialise on entry, finalise on every exit.
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.NumThreads", 1);
+    gmsh::model::add("symmesh");
+  }
+  ~GmshSession() { gmsh::finalize(); }
+};
+
+} // namespace
+
+GmshTriangles mesh_with_gmsh(const PlanarRegions& in, double size) {
+  if (!(size > 0) || !std::isfinite(size)) throw MeshingError("Gmsh baseline: size must be > 0");
+  GmshSession session;
+  std::map<std::size_t, int> point_tag;
+  std::map<std::pair<std::size_t, std::size_t>, int> line_tag; // (from, to) as created
+  const auto point = [&](std::size_t v) {
+    auto [it, inserted] = point_tag.emplace(v, 0);
+    if (inserted)
+      it->second = gmsh::model::geo::addPoint(in.points[v][0], in.points[v][1], 0, size);
+    return it->second;
+  };
+  const auto signed_line = [&](std::size_t a, std::size_t b) {
+    if (const auto it = line_tag.find({b, a}); it != line_tag.end()) return -it->second;
+    auto [it, inserted] = line_tag.emplace(std::make_pair(a, b), 0);
+    if (inserted) it->second = gmsh::model::geo::addLine(point(a), point(b));
+    return it->second;
+  };
+  std::vector<std::vector<int>> surfaces(in.regions.size());
+  try {
+    for (std::size_t r = 0; r < in.regions.size(); ++r) {
+      const auto loops = closed_curves(in.regions[r]);
+      std::vector<int> loop_tag, depth(loops.size(), 0), parent(loops.size(), -1);
+      for (const auto& l : loops) {
+        std::vector<int> curve;
+        for (std::size_t k = 0; k < l.size(); ++k)
+          curve.push_back(signed_line(l[k], l[(k + 1) % l.size()]));
+        loop_tag.push_back(gmsh::model::geo::addCurveLoop(curve));
+      }
+      for (std::size_t a = 0; a < loops.size(); ++a)
+        for (std::size_t b = 0; b < loops.size(); ++b)
+          if (a != b && inside(in.points, loops[b], in.points[loops[a][0]])) {
+            ++depth[a];
+            if (parent[a] < 0 ||
+                std::abs(signed_area(in.points, loops[b])) <
+                    std::abs(signed_area(in.points, loops[std::size_t(parent[a])])))
+              parent[a] = int(b);
+          }
+      for (std::size_t a = 0; a < loops.size(); ++a) {
+        if (depth[a] % 2) continue;
+        std::vector<int> wires{loop_tag[a]};
+        for (std::size_t h = 0; h < loops.size(); ++h)
+          if (depth[h] == depth[a] + 1 && parent[h] == int(a)) wires.push_back(loop_tag[h]);
+        surfaces[r].push_back(gmsh::model::geo::addPlaneSurface(wires));
+      }
+    }
+    gmsh::model::geo::synchronize();
+    gmsh::option::setNumber("Mesh.Algorithm", 5); // Delaunay (-algo del2d)
+    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::model::mesh::generate(2);
+  } catch (const MeshingError&) {
+    throw;
+  } catch (...) {
+    std::string why;
+    gmsh::logger::getLastError(why);
+    throw MeshingError("Gmsh baseline: " + (why.empty() ? std::string("Gmsh failed") : why));
+  }
+  GmshTriangles out;
+  std::vector<std::size_t> tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
+  std::map<std::size_t, std::size_t> index;
+  for (std::size_t k = 0; k < tags.size(); ++k) {
+    index[tags[k]] = out.nodes.size();
+    out.nodes.push_back({coords[3 * k], coords[3 * k + 1]});
+  }
+  out.triangles.resize(in.regions.size());
+  for (std::size_t r = 0; r < in.regions.size(); ++r)
+    for (int s : surfaces[r]) {
+      std::vector<std::size_t> elements, nodes;
+      gmsh::model::mesh::getElementsByType(2, elements, nodes, s);
+      for (std::size_t k = 0; k + 2 < nodes.size(); k += 3)
+        out.triangles[r].push_back(
+            {index.at(nodes[k]), index.at(nodes[k + 1]), index.at(nodes[k + 2])});
+    }
+  return out;
+}
+
+} // namespace symmesh::gen

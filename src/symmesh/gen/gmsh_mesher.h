@@ -1,0 +1,35 @@
+/// The Gmsh peer baseline (Section 7.1: the whole geometry meshed by the tool a user would
+/// otherwise pick) — spec/generation.md#gmsh
+///
+/// Planar regions given by their boundary edges over one shared point array are handed to Gmsh's
+/// built-in CAD kernel (one line per distinct edge, so neighbouring regions share their lines and
+/// therefore their mesh nodes; one plane surface per outer loop with its holes) and meshed with
+/// Gmsh's 2D Delaunay algorithm (`Mesh.Algorithm = 5`, `-algo del2d`) at `Mesh.MeshSizeMax =
+/// size`, on one thread. Gmsh has no smallest-angle parameter; quality is measured afterwards.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace symmesh::gen {
+
+struct PlanarRegions {
+  std::vector<std::array<double, 2>> points;
+  struct Region {
+    int id = 1;
+    std::vector<std::array<std::size_t, 2>> edges; ///< closed boundary curves, any orientation
+  };
+  std::vector<Region> regions;
+};
+
+struct GmshTriangles {
+  std::vector<std::array<double, 2>> nodes;
+  /// Per region (same order as the input): triangles in node indices.
+  std::vector<std::vector<std::array<std::size_t, 3>>> triangles;
+};
+
+/// \pre every region's edges form vertex-disjoint simple closed curves; size > 0. Throws
+/// MeshingError (triangle_mesher.h) otherwise or when Gmsh fails.
+GmshTriangles mesh_with_gmsh(const PlanarRegions& regions, double size);
+
+} // namespace symmesh::gen
