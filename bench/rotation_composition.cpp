@@ -14,6 +14,8 @@
 // status is ok, timeout (seconds is then the limit, is_identity empty) or error (the child died,
 // e.g. out of memory under the --memory-limit-mb address-space limit). `seconds` is wall time
 // in the child for building the matrix, the n − 1 matrix products and the exact identity test.
+#include "forked_timebox.h"
+
 #include <symmesh/number/cyclotomic.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
@@ -27,13 +29,6 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
-
-#include <poll.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
 
@@ -140,90 +135,30 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-/// Child: run once, write "seconds is_identity" to fd, exit.
-[[noreturn]] void child(const Options& o, int fd) {
-  if (o.memory_limit_mb > 0) {
-    const rlim_t bytes = static_cast<rlim_t>(o.memory_limit_mb) * 1024 * 1024;
-    const rlimit limit{bytes, bytes};
-    setrlimit(RLIMIT_AS, &limit);
-  }
-  int code = 0;
-  char buffer[128];
-  try {
-    const auto start = std::chrono::steady_clock::now();
-    const bool identity = o.type == "cyclotomic" ? run_cyclotomic(o.n) : run_core(o.n);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::snprintf(buffer, sizeof buffer, "%.6f %d\n", seconds, identity ? 1 : 0);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_rotation_composition: %s n=%ld: %s\n", o.type.c_str(), o.n,
-                 e.what());
-    std::snprintf(buffer, sizeof buffer, "error\n");
-    code = 1;
-  }
-  const ssize_t ignored = write(fd, buffer, std::strlen(buffer));
-  (void)ignored;
-  close(fd);
-  _exit(code);
-}
-
-/// Parent: one repeat, time-boxed. Returns the CSV fields seconds,is_identity,status.
+/// One repeat in a forked, time-boxed child (forked_timebox.h). Returns the CSV fields
+/// seconds,is_identity,status.
 std::string run_once(const Options& o) {
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-  if (pid == 0) {
-    close(fds[0]);
-    child(o, fds[1]);
-  }
-  close(fds[1]);
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                            std::chrono::duration<double>(o.limit_seconds));
-  std::string output;
-  bool timed_out = false;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                          deadline - std::chrono::steady_clock::now())
-                          .count();
-    if (left <= 0) {
-      timed_out = true;
-      break;
-    }
-    pollfd p{fds[0], POLLIN, 0};
-    const int r = poll(&p, 1, static_cast<int>(left));
-    if (r < 0 && errno == EINTR) continue;
-    if (r == 0) {
-      timed_out = true;
-      break;
-    }
-    char buffer[128];
-    const ssize_t got = read(fds[0], buffer, sizeof buffer);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break; // EOF: child finished (or died)
-    output.append(buffer, static_cast<std::size_t>(got));
-  }
-  close(fds[0]);
-  if (timed_out) kill(pid, SIGKILL);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-
+  const auto result = symmesh_bench::run_forked(
+      [&] {
+        const auto start = std::chrono::steady_clock::now();
+        const bool identity = o.type == "cyclotomic" ? run_cyclotomic(o.n) : run_core(o.n);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        char line[64];
+        std::snprintf(line, sizeof line, "%.6f,%s", seconds, identity ? "true" : "false");
+        return std::string(line);
+      },
+      o.limit_seconds, o.memory_limit_mb, "bench_rotation_composition");
   char fields[128];
-  if (timed_out) {
+  switch (result.status) {
+  case symmesh_bench::ForkedResult::Status::ok:
+    return result.output + ",ok";
+  case symmesh_bench::ForkedResult::Status::timeout:
     std::snprintf(fields, sizeof fields, "%.6f,,timeout", o.limit_seconds);
     return fields;
+  default:
+    return ",,error";
   }
-  double seconds = 0;
-  int identity = 0;
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
-      std::sscanf(output.c_str(), "%lf %d", &seconds, &identity) == 2) {
-    std::snprintf(fields, sizeof fields, "%.6f,%s,ok", seconds, identity ? "true" : "false");
-    return fields;
-  }
-  return ",,error";
 }
 
 } // namespace

@@ -47,6 +47,17 @@ if $PY tests/cli/symmetry_check.py "$TMP/octagon_conventional.vtu" 8 1 > /dev/nu
   fail "the symmetry check accepts the conventional (unsymmetric) octagon"; else
   pass "the symmetry check rejects the conventional octagon"; fi
 
+# The rotational method (Section 6.3, Algorithm 6.2: BPP of two copies) gives the same mesh as
+# Algorithm 5.6 on a rotational slice structure, and refuses a structure that is not one.
+generate octagon_rotational data/ngon_slice_8.json 2.8284271247461907 rotational vtu
+cmp -s "$TMP/octagon_rotational.vtu" "$TMP/octagon.vtu" && pass "rotational octagon = bpp octagon, byte for byte" \
+  || fail "rotational octagon differs from the bpp octagon"
+"$BIN" example bridge -o "$TMP/bridge.json"
+expect_exit 2 "rotational method on the bridge (translations)" -- "$BIN" generate "$TMP/bridge.json" --size 0.1 --method rotational -o "$TMP/bad6.vtu"
+grep -q "not a rotational slice structure" "$TMP/stderr" && pass "message says why" || fail "message: $(cat "$TMP/stderr")"
+[ ! -e "$TMP/bad6.vtu" ] && pass "no file for a non-rotational structure" || fail "file written for a non-rotational structure"
+expect_exit 2 "--method sao is not implemented yet" -- "$BIN" generate data/ngon_slice_8.json --size 0.1 --method sao -o "$TMP/bad7.vtu"
+
 # gmsh opens every .msh written, with as many elements as the report says and no duplicates.
 for name in rotational_slice sao16 star_gmsh; do
   cells=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['cells_structure_instance'])" "$TMP/$name.json")

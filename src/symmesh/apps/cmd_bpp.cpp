@@ -1,6 +1,7 @@
 // symmesh bpp FILE -o OUT.{svg,vtu,json} [--json] [--max-compositions N] [--quiet]
 #include "symmesh/apps/commands.h"
 #include "symmesh/core/boundary_patch_partition.h"
+#include "symmesh/io/atomic_file.h"
 #include "symmesh/io/bpp_output.h"
 #include "symmesh/io/templated_structure_json.h"
 

@@ -1,5 +1,6 @@
 // symmesh example NAME -o GEOMETRY.json | symmesh example --list
 #include "symmesh/apps/commands.h"
+#include "symmesh/io/atomic_file.h"
 #include "symmesh/io/examples.h"
 
 #include <filesystem>
@@ -29,17 +30,12 @@ int run_example(const ExampleOptions& o) {
     print_error(std::string("example: ") + e.what());
     return bad_input;
   }
-  const std::string tmp = o.out + ".part";
-  {
-    std::ofstream os(tmp);
-    os << doc.dump(2) << "\n";
-    if (!os) {
-      std::filesystem::remove(tmp);
-      print_error("example: cannot write " + o.out);
-      return bad_input;
-    }
+  try {
+    io::write_file_atomically(o.out, doc.dump(2) + "\n");
+  } catch (const std::runtime_error& e) {
+    print_error(std::string("example: ") + e.what());
+    return bad_input;
   }
-  std::filesystem::rename(tmp, o.out);
   return ok;
 }
 } // namespace

@@ -1,4 +1,5 @@
-// symmesh generate GEOMETRY.json --size H [--min-angle A] [--method auto|bpp|conventional|gmsh]
+// symmesh generate GEOMETRY.json --size H [--min-angle A] [--method
+// auto|bpp|rotational|conventional|gmsh]
 //                  -o OUT.{vtu,msh,mesh} [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/apps/commands.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
@@ -39,6 +40,7 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const
                                  const gen::GenerationOptions& g) {
   if (o.method == "conventional") return gen::generate_conventional_triangle_mesh(x, g);
   if (o.method == "gmsh") return gen::generate_gmsh_triangle_mesh(x, g);
+  if (o.method == "rotational") return gen::generate_rotational_triangle_mesh(x, g);
   return gen::generate_templated_triangle_mesh(x, g);
 }
 
@@ -47,13 +49,14 @@ int run_generate(const GenerateOptions& o) {
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  if (o.method == "reflective" || o.method == "rotational" || o.method == "sao" ||
-      o.method == "combined") {
+  if (o.method == "reflective" || o.method == "sao" || o.method == "combined") {
     print_error("--method " + o.method +
-                ": not implemented yet (this version has auto, bpp, conventional and gmsh)");
+                ": not implemented yet (this version has auto, bpp, rotational, conventional and "
+                "gmsh)");
     return bad_input;
   }
-  if (o.method != "auto" && o.method != "bpp" && o.method != "conventional" && o.method != "gmsh") {
+  if (o.method != "auto" && o.method != "bpp" && o.method != "rotational" &&
+      o.method != "conventional" && o.method != "gmsh") {
     print_error("--method " + o.method +
                 ": unknown (use auto, bpp, reflective, rotational, sao, combined, conventional "
                 "or gmsh)");
@@ -169,9 +172,10 @@ void add_generate(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-angle", o->min_angle, "smallest angle in degrees, at most 33.8")
       ->capture_default_str();
   cmd->add_option("--method", o->method,
-                  "auto|bpp (Algorithm 5.6), conventional (same mesher on the whole geometry), "
-                  "gmsh (Gmsh 2D Delaunay on the whole geometry); reflective|rotational|sao|"
-                  "combined are not implemented yet")
+                  "auto|bpp (Algorithm 5.6), rotational (slices of a rotational symmetry, "
+                  "Section 6.3/Algorithm 6.2), conventional (same mesher on the whole geometry), "
+                  "gmsh (Gmsh 2D Delaunay on the whole geometry); reflective|sao|combined are "
+                  "not implemented yet")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out, "structure instance: .vtu, .msh (4.1) or .mesh")
       ->required();

@@ -141,11 +141,50 @@ mesh::Transformation to_double_transformation(const auto& t) {
   return out;
 }
 
+/// One candidate of the SVB: the instance pair (from, to) and its identified template vertices.
+struct SvbCandidate {
+  core::InstanceId from, to;
+  std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
+};
+
+/// The BPP's mappings between distinct instances, one direction each (the inverse is a mapping
+/// too). `rotations` > 0 (the rotational method): the BPP was computed on the first two rotated
+/// copies only, and every mapping from copy a to copy b stands for all pairs (k, k + b - a mod n).
+template <class FT>
+std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& x,
+                                         const core::BoundaryPatchPartition<FT, 2>& bpp,
+                                         const std::vector<TemplateBoundary<FT>>& boundaries,
+                                         std::size_t rotations) {
+  std::vector<std::size_t> instance_offset;
+  std::size_t instances = 0;
+  for (const auto& list : x.instances) {
+    instance_offset.push_back(instances);
+    instances += list.size();
+  }
+  const auto global = [&](core::InstanceId id) { return instance_offset[id.i] + id.g; };
+  std::vector<SvbCandidate> out;
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    if (rotations == 0) {
+      if (global(m.from) < global(m.to))
+        out.push_back({m.from, m.to, mapping_pairs(bpp, l, boundaries)});
+      continue;
+    }
+    const auto pairs = mapping_pairs(bpp, l, boundaries);
+    const std::size_t n = rotations, shift = (m.to.g + n - m.from.g) % n;
+    for (std::size_t k = 0; k < n; ++k) {
+      const core::InstanceId from{m.from.i, k}, to{m.to.i, (k + shift) % n};
+      if (global(from) < global(to)) out.push_back({from, to, pairs});
+    }
+  }
+  return out;
+}
+
 /// Compact SVB: one table per distinct set of pairs, and a spanning set of instance pairs.
 template <class FT>
 void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
-                               const core::BoundaryPatchPartition<FT, 2>& bpp,
-                               const std::vector<TemplateBoundary<FT>>& boundaries,
+                               std::vector<SvbCandidate> candidates,
                                mesh::TemplatedMeshCompactSvb& out) {
   std::vector<std::size_t> instance_offset, vertex_offset;
   std::size_t instances = 0, vertices = 0;
@@ -159,40 +198,66 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
   const auto first_vertex = [&](core::InstanceId id) {
     return vertex_offset[id.i] + id.g * out.templated.templates[id.i].mesh.vertex_count();
   };
-  struct Candidate {
-    std::size_t letter;
-    std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
-  };
-  std::vector<Candidate> candidates;
-  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
-    const auto& m = bpp.mappings[l];
-    if (m.whole_boundary || global_instance(m.from) > global_instance(m.to)) continue;
-    candidates.push_back({l, mapping_pairs(bpp, l, boundaries)});
-  }
   // Interfaces with many identified vertices first, so point contacts implied by them drop out.
   std::stable_sort(
       candidates.begin(), candidates.end(),
-      [](const Candidate& a, const Candidate& b) { return a.pairs.size() > b.pairs.size(); });
+      [](const SvbCandidate& a, const SvbCandidate& b) { return a.pairs.size() > b.pairs.size(); });
   mesh::UnionFind uf(vertices);
   std::map<std::tuple<std::size_t, std::size_t,
                       std::vector<std::pair<mesh::IndexType, mesh::IndexType>>>,
            std::size_t>
       table_of;
   for (const auto& c : candidates) {
-    const auto& m = bpp.mappings[c.letter];
     bool adds = false;
     for (auto [a, b] : c.pairs)
-      adds = uf.unite(first_vertex(m.from) + std::size_t(a), first_vertex(m.to) + std::size_t(b)) ||
+      adds = uf.unite(first_vertex(c.from) + std::size_t(a), first_vertex(c.to) + std::size_t(b)) ||
              adds;
     if (!adds) continue;
-    auto key = std::make_tuple(m.from.i, m.to.i, c.pairs);
+    auto key = std::make_tuple(c.from.i, c.to.i, c.pairs);
     auto [it, inserted] = table_of.emplace(std::move(key), out.tables.size());
     if (inserted)
-      out.tables.push_back({mesh::IndexType(m.from.i), mesh::IndexType(m.to.i), c.pairs});
-    out.identifications.push_back({mesh::IndexType(global_instance(m.from)),
-                                   mesh::IndexType(global_instance(m.to)),
+      out.tables.push_back({mesh::IndexType(c.from.i), mesh::IndexType(c.to.i), c.pairs});
+    out.identifications.push_back({mesh::IndexType(global_instance(c.from)),
+                                   mesh::IndexType(global_instance(c.to)),
                                    mesh::IndexType(it->second)});
   }
+}
+
+/// Section 6.3 with Algorithm 6.2: the number n of rotated copies when every template's
+/// instances are T_{i,k} = R^k ∘ T_{i,0} for one rotation R ≠ I with R^n = I (exact), else 0
+/// with the reason in `why`.
+template <class FT>
+std::size_t rotation_order(const core::TemplatedStructure<FT, 2>& x, std::string& why) {
+  const std::size_t n = x.instances.empty() ? 0 : x.instances[0].size();
+  if (n < 2) {
+    why = "template '" + x.templates[0].name + "' needs at least 2 rotated instances";
+    return 0;
+  }
+  const auto r = x.instances[0][1].transformation * x.instances[0][0].transformation.inverse();
+  if (r.is_identity() || !(r.determinant_of_linear_part() > 0)) {
+    why = "T_{1,2} ∘ T_{1,1}^-1 is not a rotation";
+    return 0;
+  }
+  std::vector<core::RigidTransformation<FT, 2>> power{core::RigidTransformation<FT, 2>()};
+  for (std::size_t k = 1; k <= n; ++k) power.push_back(r * power.back());
+  if (!power[n].is_identity()) {
+    why = "the rotation T_{1,2} ∘ T_{1,1}^-1 does not have order " + std::to_string(n);
+    return 0;
+  }
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    if (x.instances[i].size() != n) {
+      why = "template '" + x.templates[i].name + "' has " + std::to_string(x.instances[i].size()) +
+            " instances, not the " + std::to_string(n) + " rotated copies";
+      return 0;
+    }
+    for (std::size_t k = 1; k < n; ++k)
+      if (!(x.instances[i][k].transformation == power[k] * x.instances[i][0].transformation)) {
+        why = "T_{" + std::to_string(i + 1) + "," + std::to_string(k + 1) + "} is not R^" +
+              std::to_string(k) + " ∘ T_{" + std::to_string(i + 1) + ",1}";
+        return 0;
+      }
+  }
+  return n;
 }
 
 /// The mesh template's boundary edges (edges of exactly one triangle) are exactly the line
@@ -259,7 +324,8 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
 }
 
 template <class FT>
-GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o) {
+GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o,
+                          bool rotational = false) {
   if (!(o.size > 0) || !std::isfinite(o.size))
     throw std::invalid_argument("--size must be a positive number");
   std::ostringstream why;
@@ -273,7 +339,20 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   };
   GenerationResult r;
   auto t0 = Clock::now();
-  const auto bpp = core::boundary_patch_partition(x);
+  std::size_t rotations = 0;
+  core::TemplatedStructure<FT, 2> two_copies;
+  if (rotational) {
+    // Algorithm 6.2: the slice's two half-lines are all the BPP needs; the first two rotated
+    // copies show both (every other neighbouring pair is a rotation of theirs).
+    std::string reason;
+    rotations = rotation_order(x, reason);
+    if (rotations == 0)
+      throw std::invalid_argument("--method rotational: not a rotational slice structure: " +
+                                  reason);
+    two_copies.templates = x.templates;
+    for (const auto& list : x.instances) two_copies.instances.push_back({list[0], list[1]});
+  }
+  const auto bpp = core::boundary_patch_partition(rotational ? two_copies : x);
   r.timings.boundary_patch_partition = seconds_since(t0);
   say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
       std::to_string(bpp.mappings.size()) + " mappings");
@@ -310,7 +389,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.template_meshing = seconds_since(t0);
 
   t0 = Clock::now();
-  shared_vertex_bookkeeping(x, bpp, boundaries, r.templated);
+  shared_vertex_bookkeeping(x, svb_candidates(x, bpp, boundaries, rotations), r.templated);
   r.timings.svb = seconds_since(t0);
 
   t0 = Clock::now();
@@ -471,6 +550,16 @@ GenerationResult
 generate_gmsh_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
                             const GenerationOptions& options) {
   return generate_gmsh(lazily(x), options);
+}
+
+GenerationResult generate_rotational_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                                   const GenerationOptions& options) {
+  return generate(x, options, true);
+}
+GenerationResult
+generate_rotational_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                  const GenerationOptions& options) {
+  return generate(lazily(x), options, true);
 }
 
 GenerationResult generate_templated_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,

@@ -56,6 +56,17 @@ GenerationResult
 generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
                                  const GenerationOptions& options);
 
+/// The rotational slice method (Section 6.3 with Algorithm 6.2): every template is instanced by
+/// the n rotations T_{i,k} = R^k ∘ T_{i,0} (checked exactly); the boundary patch partition is
+/// computed on the first two copies only and its mappings are replicated to all n consecutive
+/// pairs for the SVB; line meshing, template meshing and the Lemma 4.2 certificate (on the whole
+/// structure) as in Algorithm 5.6. Throws std::invalid_argument for a non-rotational structure.
+GenerationResult generate_rotational_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
+                                                   const GenerationOptions& options);
+GenerationResult
+generate_rotational_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                  const GenerationOptions& options);
+
 /// The conventional baseline (Section 7.1): per region, AT of that region's instances as one
 /// template with one instance, meshed by the same line meshing and the same mesher with the same
 /// parameters (region boundaries stay mesh edges).

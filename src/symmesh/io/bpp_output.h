@@ -49,8 +49,4 @@ std::string bpp_vtu(const Bpp3& bpp);
 std::string bpp_vtu(const CyclotomicBpp2& bpp);
 std::string bpp_vtu(const CyclotomicBpp3& bpp);
 
-/// Writes `text` to `path` through a temporary file and a rename, so that a failure leaves no
-/// partial output. Throws std::runtime_error when the file cannot be written.
-void write_file_atomically(const std::string& path, const std::string& text);
-
 } // namespace symmesh::io

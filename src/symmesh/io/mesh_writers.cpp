@@ -1,6 +1,8 @@
 // .vtu, .msh 4.1 and .mesh writers (spec/outputs.md#mesh-files).
 #include "symmesh/io/mesh_writers.h"
 
+#include "symmesh/io/atomic_file.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -17,22 +19,6 @@ std::string number(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
-}
-
-/// Writes through `body` into path + ".part", then renames it onto path.
-void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& body) {
-  const std::string tmp = path + ".part";
-  {
-    std::ofstream os(tmp, std::ios::binary);
-    if (!os) throw std::runtime_error("cannot write " + path);
-    body(os);
-    os.flush();
-    if (!os) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error("cannot write " + path);
-    }
-  }
-  std::filesystem::rename(tmp, path);
 }
 
 double coordinate(const mesh::Mesh& m, std::size_t v, int d) {

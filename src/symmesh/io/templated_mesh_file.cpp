@@ -1,6 +1,8 @@
 // .tmesh writer and reader (spec/outputs.md#tmesh).
 #include "symmesh/io/templated_mesh_file.h"
 
+#include "symmesh/io/atomic_file.h"
+
 #include "symmesh/io/templated_structure_json.h"
 
 #include <nlohmann/json.hpp>
@@ -86,16 +88,7 @@ void write_tmesh(const mesh::TemplatedMeshCompactSvb& t, const std::string& path
   for (const auto& id : t.identifications)
     ids.push_back(J::array({id.from_instance, id.to_instance, id.table}));
   doc["identifications"] = ids;
-  const std::string tmp = path + ".part";
-  {
-    std::ofstream os(tmp);
-    os << doc.dump() << "\n";
-    if (!os) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error("cannot write " + path);
-    }
-  }
-  std::filesystem::rename(tmp, path);
+  write_file_atomically(path, doc.dump() + "\n");
 }
 
 mesh::TemplatedMeshCompactSvb read_tmesh(const std::string& path) {
