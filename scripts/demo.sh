@@ -31,6 +31,12 @@ for name in ngon-sao-16 bridge mosfet star-reflective-rotational; do
     --templated "$out/$name.tmesh" --report "$out/$name.report.json" || exit 1
 done
 run "$bin" generate "$out/ngon-sao-16.json" --size 0.05 --min-angle 25 -o "$out/ngon-sao-16.msh" --quiet || exit 1
+# The 64-gon by rotational slices (Section 6.3) next to the same mesher and Gmsh on the whole.
+run "$bin" example ngon-slice-64 -o "$out/ngon-slice-64.json" || exit 1
+for method in rotational conventional gmsh; do
+  run "$bin" generate "$out/ngon-slice-64.json" --size 0.02 --min-angle 25 --method "$method" \
+    -o "$out/ngon-slice-64.$method.vtu" --report "$out/ngon-slice-64.$method.report.json" --quiet || exit 1
+done
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"

@@ -55,7 +55,7 @@ TEST(CompactSvb, OctagonSlicesAgreeWithListing42AndTheStructureInstance) {
   gen::GenerationOptions o;
   o.size = 0.1;
   o.min_angle_deg = 25;
-  const auto r = gen::generate_templated_triangle_mesh(x, o);
+  const auto r = gen::generate_triangle_mesh(x, gen::Method::bpp, o);
   ASSERT_TRUE(r.lemma_4_2_holds) << r.lemma_4_2_failure;
   std::ostringstream why;
   ASSERT_TRUE(r.templated.is_valid(&why)) << why.str();
@@ -96,7 +96,7 @@ TEST(TemplatedMeshFile, RoundTripIsExactAndBadFilesNameTheField) {
       std::string(SYMMESH_SOURCE_DIR) + "/data/fig_6_7_rotational_slice.json"));
   gen::GenerationOptions o;
   o.size = 0.3;
-  const auto r = gen::generate_templated_triangle_mesh(x, o);
+  const auto r = gen::generate_triangle_mesh(x, gen::Method::bpp, o);
   const std::string path = testing::TempDir() + "/round_trip.tmesh";
   io::write_tmesh(r.templated, path);
   const auto back = io::read_tmesh(path);

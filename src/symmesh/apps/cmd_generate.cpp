@@ -38,10 +38,11 @@ std::size_t peak_rss_bytes() {
 template <class FT>
 gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const GenerateOptions& o,
                                  const gen::GenerationOptions& g) {
-  if (o.method == "conventional") return gen::generate_conventional_triangle_mesh(x, g);
-  if (o.method == "gmsh") return gen::generate_gmsh_triangle_mesh(x, g);
-  if (o.method == "rotational") return gen::generate_rotational_triangle_mesh(x, g);
-  return gen::generate_templated_triangle_mesh(x, g);
+  const auto method = o.method == "conventional" ? gen::Method::conventional
+                      : o.method == "gmsh"       ? gen::Method::gmsh
+                      : o.method == "rotational" ? gen::Method::rotational
+                                                 : gen::Method::bpp;
+  return gen::generate_triangle_mesh(x, method, g);
 }
 
 int run_generate(const GenerateOptions& o) {

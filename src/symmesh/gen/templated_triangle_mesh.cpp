@@ -540,45 +540,31 @@ lazily(const core::TemplatedStructure<number::Cyclotomic, 2>& x) {
   return core::convert_numbers<LazyCyclotomic>(
       x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
 }
-} // namespace
 
-GenerationResult generate_gmsh_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                             const GenerationOptions& options) {
-  return generate_gmsh(x, options);
-}
-GenerationResult
-generate_gmsh_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                            const GenerationOptions& options) {
-  return generate_gmsh(lazily(x), options);
-}
-
-GenerationResult generate_rotational_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                                   const GenerationOptions& options) {
-  return generate(x, options, true);
-}
-GenerationResult
-generate_rotational_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                                  const GenerationOptions& options) {
-  return generate(lazily(x), options, true);
-}
-
-GenerationResult generate_templated_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                                  const GenerationOptions& options) {
+template <class FT>
+GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method method,
+                             const GenerationOptions& options) {
+  switch (method) {
+  case Method::rotational:
+    return generate(x, options, true);
+  case Method::conventional:
+    return generate(as_region_templates(x), options);
+  case Method::gmsh:
+    return generate_gmsh(x, options);
+  case Method::bpp:
+    break;
+  }
   return generate(x, options);
 }
-GenerationResult
-generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                                 const GenerationOptions& options) {
-  return generate(lazily(x), options);
+} // namespace
+
+GenerationResult generate_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x, Method method,
+                                        const GenerationOptions& options) {
+  return generate_by(x, method, options);
 }
-GenerationResult generate_conventional_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                                     const GenerationOptions& options) {
-  return generate(as_region_templates(x), options);
-}
-GenerationResult
-generate_conventional_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                                    const GenerationOptions& options) {
-  return generate(as_region_templates(lazily(x)), options);
+GenerationResult generate_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                        Method method, const GenerationOptions& options) {
+  return generate_by(lazily(x), method, options);
 }
 
 } // namespace symmesh::gen

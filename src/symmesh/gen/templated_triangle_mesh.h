@@ -46,42 +46,24 @@ struct GenerationResult {
   std::string lemma_4_2_failure; ///< the failing instance pair, when it does not hold
 };
 
-/// Algorithm 5.6 on a 2D templated geometry over the rationals or K_m.
+/// The generation methods of `symmesh generate --method` (spec/generation.md):
+///  bpp          Algorithm 5.6 over the boundary patch partition;
+///  rotational   Section 6.3 with Algorithm 6.2: every template instanced by the n rotations
+///               T_{i,k} = R^k ∘ T_{i,0} (checked exactly); the BPP of the first two copies,
+///               its mappings replicated to all n consecutive pairs for the SVB; otherwise as bpp;
+///  conventional the baseline of Section 7.1: per region, AT of that region's instances as one
+///               template with one instance, through the same line meshing and mesher with the
+///               same parameters (region boundaries stay mesh edges);
+///  gmsh         the peer: the whole geometry, per region, meshed by Gmsh's 2D Delaunay at the
+///               same size (Gmsh has no smallest-angle parameter).
+enum class Method { bpp, rotational, conventional, gmsh };
+
 /// \pre x is a templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
-/// std::invalid_argument for other input and MeshingError when the mesher cannot respect a
-/// boundary.
-GenerationResult generate_templated_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                                  const GenerationOptions& options);
-GenerationResult
-generate_templated_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                                 const GenerationOptions& options);
-
-/// The rotational slice method (Section 6.3 with Algorithm 6.2): every template is instanced by
-/// the n rotations T_{i,k} = R^k ∘ T_{i,0} (checked exactly); the boundary patch partition is
-/// computed on the first two copies only and its mappings are replicated to all n consecutive
-/// pairs for the SVB; line meshing, template meshing and the Lemma 4.2 certificate (on the whole
-/// structure) as in Algorithm 5.6. Throws std::invalid_argument for a non-rotational structure.
-GenerationResult generate_rotational_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                                   const GenerationOptions& options);
-GenerationResult
-generate_rotational_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                                  const GenerationOptions& options);
-
-/// The conventional baseline (Section 7.1): per region, AT of that region's instances as one
-/// template with one instance, meshed by the same line meshing and the same mesher with the same
-/// parameters (region boundaries stay mesh edges).
-GenerationResult generate_conventional_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                                     const GenerationOptions& options);
-GenerationResult
-generate_conventional_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                                    const GenerationOptions& options);
-
-/// The Gmsh peer (spec/generation.md#gmsh): the whole geometry, per region, meshed by Gmsh's 2D
-/// Delaunay at the same size (no smallest-angle parameter in Gmsh).
-GenerationResult generate_gmsh_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x,
-                                             const GenerationOptions& options);
-GenerationResult
-generate_gmsh_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
-                            const GenerationOptions& options);
+/// std::invalid_argument for other input (and for `rotational` on a structure that is not
+/// rotational) and MeshingError when the mesher cannot respect a boundary.
+GenerationResult generate_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x, Method method,
+                                        const GenerationOptions& options);
+GenerationResult generate_triangle_mesh(const core::TemplatedStructure<number::Cyclotomic, 2>& x,
+                                        Method method, const GenerationOptions& options);
 
 } // namespace symmesh::gen
