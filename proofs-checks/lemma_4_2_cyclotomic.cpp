@@ -61,6 +61,45 @@ void sufficiency(const RotationalStructure& s) {
                        picture(s));
 }
 
+/// spec/lemmas.md#lemma-4-2-rotational: for T_{i,k} = R^k ∘ T_{i,0} the check up to the
+/// rotation (pairs with copy 0 only), on the full meshes and on their boundary complexes (what
+/// `generate --method rotational` certifies with), gives the verdict of the direct check of AT.
+void rotation_reduction_equals_direct(const RotationalStructure& s) {
+  const bool direct = core::structure_instance_conforming(core::apply_template(s.x));
+  RC_TAG(direct ? "AT conforming" : "AT not conforming");
+  SYMMESH_PROOF_ASSERT(core::check_interface_conformity_up_to_rotation(s.x).holds == direct,
+                       record(s), picture(s));
+  SYMMESH_PROOF_ASSERT(
+      core::check_interface_conformity_up_to_rotation(core::boundary_structure(s.x)).holds ==
+          direct,
+      record(s), picture(s));
+}
+void rotation_reduction_agrees(const RotationalStructure& s) {
+  well_formed(s, true);
+  rotation_reduction_equals_direct(s);
+}
+
+/// Rotation invariance dropped: a copy of the slice far away comes first (so it is "copy 0"),
+/// then two consecutive slices with different radii, which do not conform. No pair with copy 0
+/// meets, so the reduced check certifies, while AT is not conforming.
+rc::Gen<RotationalStructure> not_rotation_invariant() {
+  return rc::gen::map(rotational_structure(false), [](RotationalStructure s) {
+    auto& list = s.x.instances[0];
+    const KPoint far = make_point(Cyclotomic(1000), Cyclotomic(0));
+    auto w = list[0];
+    w.transformation = KMotion::translation(far) * w.transformation;
+    list = {w, list[0], list[1]};
+    s.recipe = "far copy first, then the first two slices of " + s.recipe;
+    return s;
+  });
+}
+void rotation_reduction_without_invariance(const RotationalStructure& s) {
+  SYMMESH_PROOF_ASSERT(core::check_interface_conformity_up_to_rotation(s.x).holds, record(s),
+                       picture(s));
+  SYMMESH_PROOF_ASSERT(!core::structure_instance_conforming(core::apply_template(s.x)), record(s),
+                       picture(s));
+}
+
 void conclusion_only(const RotationalStructure& s) {
   SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(core::apply_template(s.x)), record(s),
                        picture(s));
@@ -126,6 +165,31 @@ void register_lemma_4_2_cyclotomic(std::vector<Property>& p) {
                      [] { checker_agrees(*rotational_structure(chance(50))); });
                },
                {}});
+  p.push_back({kLemma, "cyclotomic_rotation_reduction_agrees_2d", 2, Kind::holds,
+               "Lemma 4.2 up to the rotation (pairs with copy 0 only; spec/lemmas.md#lemma-4-2-"
+               "rotational) over K_m: on rotational structures (equal or different radii), on the "
+               "meshes and on their boundary complexes, the verdict equals the direct check of AT",
+               [] {
+                 return rc::detail::toProperty(
+                     [] { rotation_reduction_agrees(*rotational_structure(chance(50))); });
+               },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { rotation_reduction_equals_direct(*not_rotation_invariant()); });
+               }});
+  p.push_back(
+      {kLemma,
+       "cyclotomic_rotation_reduction_needs_invariance_2d",
+       2,
+       Kind::counterexample,
+       "Without T_{i,k} = R^k ∘ T_{i,0} the reduction is unsound: a far copy listed first, then "
+       "two non-conforming slices; no pair with copy 0 meets, the reduced check certifies, AT "
+       "is not conforming",
+       [] {
+         return rc::detail::toProperty(
+             [] { rotation_reduction_without_invariance(*not_rotation_invariant()); });
+       },
+       {}});
   p.push_back(
       {kLemma,
        "cyclotomic_different_radii_counterexample_2d",

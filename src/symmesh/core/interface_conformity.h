@@ -270,6 +270,85 @@ Lemma42Verdict check_interface_conformity_on_boundaries(const TemplatedStructure
   return check_interface_conformity(b, apply_template(b));
 }
 
+/// Lemma 4.2 on a rotationally invariant structure, up to the rotation
+/// (spec/lemmas.md#lemma-4-2-rotational): when every template's instances are
+/// T_{i,k} = R^k ∘ T_{i,0}, k = 0..n-1, the rotation R^-k maps the pair ((i,k), (j,l)) onto
+/// ((i,0), (j,l-k)), and isometries keep meeting relative interiors, so condition (i) only has to
+/// be decided for the pairs with a copy 0. Copy 0 is applied in full; of the other copies only
+/// the elements whose certified box meets the copies 0 are applied (with exact identification of
+/// their points), which is what makes the check cost one slice's neighbourhood rather than n
+/// slices. (ii) is not evaluated: it is implied by (i) (spec/lemmas.md#lemma-4-2), and vacuous on
+/// the boundary complexes this is used with.
+/// \pre every template has n >= 1 instances T_{i,k} = R^k ∘ T_{i,0} for one rotation R of order n
+/// (checked by the caller, e.g. gen's rotation_order)
+template <class FT, int D>
+Lemma42Verdict check_interface_conformity_up_to_rotation(const TemplatedStructure<FT, D>& x) {
+  using Bound = decltype(CGAL::to_interval(std::declval<const FT&>()).first);
+  using IBox = std::pair<std::array<Bound, D>, std::array<Bound, D>>;
+  const auto box_of_points = [](const std::vector<Point<FT, D>>& p, const auto& ids) {
+    IBox b;
+    bool first = true;
+    for (VertexId v : ids)
+      for (int d = 0; d < D; ++d) {
+        const auto [lo, hi] = CGAL::to_interval(p[v][d]);
+        b.first[d] = first ? lo : std::min(b.first[d], lo);
+        b.second[d] = first ? hi : std::max(b.second[d], hi);
+        if (d == D - 1) first = false;
+      }
+    return b;
+  };
+  const auto meet = [](const IBox& a, const IBox& b) {
+    for (int d = 0; d < D; ++d)
+      if (a.second[d] < b.first[d] || b.second[d] < a.first[d]) return false;
+    return true;
+  };
+  StructureInstance<FT, D> si;
+  si.ids = x.instance_ids();
+  std::vector<std::vector<Point<FT, D>>> moved(si.ids.size());
+  std::vector<IBox> copy0_boxes;
+  for (std::size_t a = 0; a < si.ids.size(); ++a) {
+    const auto& t = x.tf(si.ids[a]);
+    for (const auto& p : x.templates[si.ids[a].i].mesh.points) moved[a].push_back(t(p));
+    if (si.ids[a].g == 0) {
+      std::vector<VertexId> all(moved[a].size());
+      for (std::size_t v = 0; v < all.size(); ++v) all[v] = VertexId(v);
+      copy0_boxes.push_back(box_of_points(moved[a], all));
+    }
+  }
+  std::map<Point<FT, D>, VertexId, PointLess<FT, D>> index;
+  auto& pts = si.at.mesh.points;
+  si.instance_elements.resize(si.ids.size());
+  for (std::size_t a = 0; a < si.ids.size(); ++a)
+    for (const auto& e : x.templates[si.ids[a].i].mesh.elements) {
+      if (si.ids[a].g != 0) {
+        const auto b = box_of_points(moved[a], e);
+        if (std::none_of(copy0_boxes.begin(), copy0_boxes.end(),
+                         [&](const IBox& c) { return meet(b, c); }))
+          continue;
+      }
+      std::array<VertexId, 4> g{};
+      for (int k = 0; k < e.n; ++k) {
+        auto [it, inserted] = index.emplace(moved[a][e.v[k]], VertexId(pts.size()));
+        if (inserted) pts.push_back(moved[a][e.v[k]]);
+        g[std::size_t(k)] = it->second;
+      }
+      si.instance_elements[a].push_back(Simplex::from_range(g.data(), g.data() + e.n));
+    }
+  Lemma42Verdict v;
+  for (std::size_t a = 0; a < si.ids.size(); ++a)
+    if (si.ids[a].g != 0 && !si.instance_elements[a].empty()) ++v.pairs_checked;
+  const auto failures = condition_i_failures(si);
+  if (!failures.empty()) {
+    const auto& [pair, detail] = *failures.begin();
+    v.holds = false;
+    v.a = si.ids[pair.first];
+    v.b = si.ids[pair.second];
+    v.condition = 1;
+    v.detail = detail;
+  }
+  return v;
+}
+
 /// Definition 4.4 directly: AT(X) is conforming.
 template <class FT, int D>
 bool structure_instance_conforming(const StructureInstance<FT, D>& si) {

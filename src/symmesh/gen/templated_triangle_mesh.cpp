@@ -295,10 +295,12 @@ bool boundary_is_line_mesh(const mesh::Mesh& m, const BoundaryInput& in, std::st
 /// the instances' interiors are disjoint (checked before meshing), so every non-conformity of
 /// AT lies between transformed boundary elements. Each boundary complex is the line mesh with
 /// its exact points, after checking that the mesher kept it as the template's boundary.
+/// `rotational`: x was checked to be invariant under its rotation (rotation_order), so the check
+/// runs up to the rotation (spec/lemmas.md#lemma-4-2-rotational).
 template <class FT>
 core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
                              const std::vector<TemplateBoundary<FT>>& boundaries,
-                             const mesh::TemplatedMesh& tm) {
+                             const mesh::TemplatedMesh& tm, bool rotational) {
   core::TemplatedStructure<FT, 2> bnd;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     const auto& b = boundaries[i];
@@ -320,6 +322,7 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
     bnd.templates.push_back(std::move(t));
     bnd.instances.push_back(x.instances[i]);
   }
+  if (rotational) return core::check_interface_conformity_up_to_rotation(bnd);
   return core::check_interface_conformity(bnd, core::apply_template(bnd));
 }
 
@@ -393,7 +396,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.svb = seconds_since(t0);
 
   t0 = Clock::now();
-  const auto verdict = certify(x, boundaries, tm);
+  const auto verdict = certify(x, boundaries, tm, rotational);
   r.timings.certificate = seconds_since(t0);
   r.lemma_4_2_holds = verdict.holds;
   if (!verdict.holds)
