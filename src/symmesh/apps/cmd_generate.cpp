@@ -41,7 +41,8 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const
   const auto method = o.method == "conventional" ? gen::Method::conventional
                       : o.method == "gmsh"       ? gen::Method::gmsh
                       : o.method == "rotational" ? gen::Method::rotational
-                                                 : gen::Method::bpp;
+                      : o.method == "bpp"        ? gen::Method::bpp
+                                                 : gen::Method::automatic;
   return gen::generate_triangle_mesh(x, method, g);
 }
 
@@ -119,7 +120,7 @@ int run_generate(const GenerateOptions& o) {
   std::size_t template_cells = 0;
   for (const auto& t : r.templated.templated.templates) template_cells += t.mesh.cell_count();
   nlohmann::ordered_json j;
-  j["method"] = o.method == "auto" ? "bpp" : o.method;
+  j["method"] = r.method;
   j["size"] = o.size;
   j["min_angle_requested_deg"] = o.min_angle;
   j["cells_structure_instance"] = si.mesh.mesh.cell_count();
@@ -173,7 +174,8 @@ void add_generate(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-angle", o->min_angle, "smallest angle in degrees, at most 33.8")
       ->capture_default_str();
   cmd->add_option("--method", o->method,
-                  "auto|bpp (Algorithm 5.6), rotational (slices of a rotational symmetry, "
+                  "auto (rotational when the structure is one, else bpp)|bpp (Algorithm 5.6), "
+                  "rotational (slices of a rotational symmetry, "
                   "Section 6.3/Algorithm 6.2), conventional (same mesher on the whole geometry), "
                   "gmsh (Gmsh 2D Delaunay on the whole geometry); reflective|sao|combined are "
                   "not implemented yet")

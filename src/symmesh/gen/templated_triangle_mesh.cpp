@@ -547,17 +547,31 @@ lazily(const core::TemplatedStructure<number::Cyclotomic, 2>& x) {
 template <class FT>
 GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method method,
                              const GenerationOptions& options) {
+  std::string unused;
+  if (method == Method::automatic)
+    method =
+        x.instances.size() > 0 && rotation_order(x, unused) > 0 ? Method::rotational : Method::bpp;
+  GenerationResult r;
   switch (method) {
   case Method::rotational:
-    return generate(x, options, true);
+    r = generate(x, options, true);
+    r.method = "rotational";
+    break;
   case Method::conventional:
-    return generate(as_region_templates(x), options);
+    r = generate(as_region_templates(x), options);
+    r.method = "conventional";
+    break;
   case Method::gmsh:
-    return generate_gmsh(x, options);
+    r = generate_gmsh(x, options);
+    r.method = "gmsh";
+    break;
+  case Method::automatic:
   case Method::bpp:
+    r = generate(x, options);
+    r.method = "bpp";
     break;
   }
-  return generate(x, options);
+  return r;
 }
 } // namespace
 

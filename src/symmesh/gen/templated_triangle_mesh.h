@@ -41,12 +41,14 @@ struct GenerationTimings {
 
 struct GenerationResult {
   mesh::TemplatedMeshCompactSvb templated;
+  std::string method; ///< the method that ran ("bpp", "rotational", "conventional", "gmsh")
   GenerationTimings timings;
   bool lemma_4_2_holds = false;
   std::string lemma_4_2_failure; ///< the failing instance pair, when it does not hold
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):
+///  automatic    rotational when the structure is one (checked exactly), else bpp;
 ///  bpp          Algorithm 5.6 over the boundary patch partition;
 ///  rotational   Section 6.3 with Algorithm 6.2: every template instanced by the n rotations
 ///               T_{i,k} = R^k ∘ T_{i,0} (checked exactly); the BPP of the first two copies,
@@ -56,7 +58,7 @@ struct GenerationResult {
 ///               same parameters (region boundaries stay mesh edges);
 ///  gmsh         the peer: the whole geometry, per region, meshed by Gmsh's 2D Delaunay at the
 ///               same size (Gmsh has no smallest-angle parameter).
-enum class Method { bpp, rotational, conventional, gmsh };
+enum class Method { automatic, bpp, rotational, conventional, gmsh };
 
 /// \pre x is a templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
 /// std::invalid_argument for other input (and for `rotational` on a structure that is not
