@@ -58,6 +58,26 @@ grep -q "not a rotational slice structure" "$TMP/stderr" && pass "message says w
 [ ! -e "$TMP/bad6.vtu" ] && pass "no file for a non-rotational structure" || fail "file written for a non-rotational structure"
 expect_exit 2 "--method sao is not implemented yet" -- "$BIN" generate data/ngon_slice_8.json --size 0.1 --method sao -o "$TMP/bad7.vtu"
 
+# Reflective (Algorithms 6.1/6.4) and reflective-rotational (Algorithm 6.5) methods: conforming,
+# the geometry's area, and the mesh maps onto itself under the mirror / the rotation.
+"$BIN" example mosfet -o "$TMP/mosfet.json"
+"$BIN" example star-reflective-rotational -o "$TMP/srr.json"
+generate mosfet_reflective "$TMP/mosfet.json" "$($PY tests/cli/geometry_area.py "$TMP/mosfet.json")" reflective vtu
+generate star_combined "$TMP/srr.json" "$($PY tests/cli/geometry_area.py "$TMP/srr.json")" combined msh
+generate plus_reflective tests/data/orthogonal_reflections_2d.json 20 reflective vtu
+for case in "mosfet_reflective.vtu 0 0" "star_combined.msh 5 1" "star_combined.msh 5 2" \
+            "plus_reflective.vtu 0 0" "plus_reflective.vtu 2 1"; do
+  set -- $case
+  if msg=$($PY tests/cli/symmetry_check.py "$TMP/$1" "$2" "$3" 2>&1); then
+    pass "$1 under its symmetry ($2, $3): $(echo "$msg" | tail -1)"; else fail "$1 under its symmetry ($2, $3): $msg"; fi
+done
+$PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['method'] == 'combined' and r['instances'] == 10, r" \
+  "$TMP/star_combined.json" && pass "star: 10 copies of one half-slice (combined)" || fail "star: report"
+expect_exit 2 "reflective method on the octagon slices (rotations)" -- "$BIN" generate data/ngon_slice_8.json --size 0.1 --method reflective -o "$TMP/bad8.vtu"
+grep -q "not a reflective structure" "$TMP/stderr" && pass "message says why" || fail "message: $(cat "$TMP/stderr")"
+[ ! -e "$TMP/bad8.vtu" ] && pass "no file for a non-reflective structure" || fail "file written for a non-reflective structure"
+expect_exit 2 "combined method on the MOSFET (one mirror, no rotation)" -- "$BIN" generate "$TMP/mosfet.json" --size 0.1 --method combined -o "$TMP/bad9.vtu"
+
 # gmsh opens every .msh written, with as many elements as the report says and no duplicates.
 for name in rotational_slice sao16 star_gmsh; do
   cells=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['cells_structure_instance'])" "$TMP/$name.json")

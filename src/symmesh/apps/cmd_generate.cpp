@@ -1,5 +1,4 @@
-// symmesh generate GEOMETRY.json --size H [--min-angle A] [--method
-// auto|bpp|rotational|conventional|gmsh]
+// symmesh generate GEOMETRY.json --size H [--min-angle A] [--method METHOD (spec/generation.md)]
 //                  -o OUT.{vtu,msh,mesh} [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/apps/commands.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
@@ -18,6 +17,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <variant>
 
 namespace symmesh::apps {
@@ -38,11 +38,14 @@ std::size_t peak_rss_bytes() {
 template <class FT>
 gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const GenerateOptions& o,
                                  const gen::GenerationOptions& g) {
-  const auto method = o.method == "conventional" ? gen::Method::conventional
-                      : o.method == "gmsh"       ? gen::Method::gmsh
-                      : o.method == "rotational" ? gen::Method::rotational
-                      : o.method == "bpp"        ? gen::Method::bpp
-                                                 : gen::Method::automatic;
+  const std::map<std::string, gen::Method> methods{{"auto", gen::Method::automatic},
+                                                   {"bpp", gen::Method::bpp},
+                                                   {"rotational", gen::Method::rotational},
+                                                   {"reflective", gen::Method::reflective},
+                                                   {"combined", gen::Method::combined},
+                                                   {"conventional", gen::Method::conventional},
+                                                   {"gmsh", gen::Method::gmsh}};
+  const auto method = methods.at(o.method);
   return gen::generate_triangle_mesh(x, method, g);
 }
 
@@ -51,14 +54,15 @@ int run_generate(const GenerateOptions& o) {
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  if (o.method == "reflective" || o.method == "sao" || o.method == "combined") {
+  if (o.method == "sao") {
     print_error("--method " + o.method +
-                ": not implemented yet (this version has auto, bpp, rotational, conventional and "
-                "gmsh)");
+                ": not implemented yet (this version has auto, bpp, rotational, reflective, "
+                "combined, conventional and gmsh)");
     return bad_input;
   }
   if (o.method != "auto" && o.method != "bpp" && o.method != "rotational" &&
-      o.method != "conventional" && o.method != "gmsh") {
+      o.method != "reflective" && o.method != "combined" && o.method != "conventional" &&
+      o.method != "gmsh") {
     print_error("--method " + o.method +
                 ": unknown (use auto, bpp, reflective, rotational, sao, combined, conventional "
                 "or gmsh)");
@@ -174,11 +178,11 @@ void add_generate(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-angle", o->min_angle, "smallest angle in degrees, at most 33.8")
       ->capture_default_str();
   cmd->add_option("--method", o->method,
-                  "auto (rotational when the structure is one, else bpp)|bpp (Algorithm 5.6), "
-                  "rotational (slices of a rotational symmetry, "
-                  "Section 6.3/Algorithm 6.2), conventional (same mesher on the whole geometry), "
-                  "gmsh (Gmsh 2D Delaunay on the whole geometry); reflective|sao|combined are "
-                  "not implemented yet")
+                  "auto (rotational when the structure is one, else bpp) | bpp (Algorithm 5.6) | "
+                  "rotational (slices of a rotational symmetry, Section 6.3/Algorithm 6.2) | "
+                  "reflective (Algorithms 6.1/6.4) | combined (reflective-rotational, Algorithm "
+                  "6.5) | conventional (same mesher on the whole geometry) | gmsh (Gmsh 2D "
+                  "Delaunay on the whole geometry); sao is not implemented yet")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out, "structure instance: .vtu, .msh (4.1) or .mesh")
       ->required();

@@ -150,11 +150,13 @@ struct SvbCandidate {
 /// The BPP's mappings between distinct instances, one direction each (the inverse is a mapping
 /// too). `rotations` > 0 (the rotational method): the BPP was computed on the first two rotated
 /// copies only, and every mapping from copy a to copy b stands for all pairs (k, k + b - a mod n).
+/// `copies` > 0 (reflective/combined): the BPP was computed on copy 0 only, and every mapping
+/// from (i,0) to (j,0) stands for all pairs ((i,k), (j,k)).
 template <class FT>
 std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& x,
                                          const core::BoundaryPatchPartition<FT, 2>& bpp,
                                          const std::vector<TemplateBoundary<FT>>& boundaries,
-                                         std::size_t rotations) {
+                                         std::size_t rotations, std::size_t copies = 0) {
   std::vector<std::size_t> instance_offset;
   std::size_t instances = 0;
   for (const auto& list : x.instances) {
@@ -166,6 +168,14 @@ std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& 
   for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
     const auto& m = bpp.mappings[l];
     if (m.whole_boundary) continue;
+    if (copies > 0) {
+      const auto pairs = mapping_pairs(bpp, l, boundaries);
+      for (std::size_t k = 0; k < copies; ++k) {
+        const core::InstanceId from{m.from.i, k}, to{m.to.i, k};
+        if (global(from) < global(to)) out.push_back({from, to, pairs});
+      }
+      continue;
+    }
     if (rotations == 0) {
       if (global(m.from) < global(m.to))
         out.push_back({m.from, m.to, mapping_pairs(bpp, l, boundaries)});
@@ -260,6 +270,88 @@ std::size_t rotation_order(const core::TemplatedStructure<FT, 2>& x, std::string
   return n;
 }
 
+/// How generate() uses the symmetry of the structure (spec/generation.md).
+enum class Symmetry { none, rotational, reflective, combined };
+
+/// Algorithms 6.1/6.4 (reflective) and 6.5 (combined), on templated input: the copies
+/// S_k = T_{1,k} ∘ T_{1,1}^-1 must be the same for every template (T_{i,k} = S_k ∘ T_{i,0}) and
+/// form a finite group containing a reflection; `reflective` asks that every S_k be an involution
+/// (I and one reflection, or the four compositions of two orthogonal reflections, Alg. 6.4),
+/// `combined` that the group also contain a rotation of order >= 3 (the dihedral group of a
+/// reflective-rotational object, Alg. 6.5). Returns the copies, or throws naming the reason.
+template <class FT>
+std::vector<core::RigidTransformation<FT, 2>>
+symmetry_copies(const core::TemplatedStructure<FT, 2>& x, Symmetry kind) {
+  const std::string method = kind == Symmetry::reflective ? "reflective" : "combined";
+  const auto fail = [&](const std::string& why) {
+    throw std::invalid_argument("--method " + method + ": not a " +
+                                (kind == Symmetry::reflective
+                                     ? std::string("reflective")
+                                     : std::string("reflective-rotational")) +
+                                " structure: " + why);
+  };
+  const std::size_t n = x.instances.empty() ? 0 : x.instances[0].size();
+  if (n < 2) fail("template 1 needs at least 2 instances");
+  std::vector<core::RigidTransformation<FT, 2>> copies;
+  const auto t0_inv = x.instances[0][0].transformation.inverse();
+  for (const auto& inst : x.instances[0]) copies.push_back(inst.transformation * t0_inv);
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    if (x.instances[i].size() != n)
+      fail("template " + std::to_string(i + 1) + " has " + std::to_string(x.instances[i].size()) +
+           " instances, template 1 has " + std::to_string(n));
+    for (std::size_t k = 1; k < n; ++k)
+      if (!(x.instances[i][k].transformation == copies[k] * x.instances[i][0].transformation))
+        fail("T_{" + std::to_string(i + 1) + "," + std::to_string(k + 1) + "} is not S_" +
+             std::to_string(k + 1) + " ∘ T_{" + std::to_string(i + 1) + ",1}");
+  }
+  const auto find = [&](const core::RigidTransformation<FT, 2>& t) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (copies[k] == t) return k;
+    return n;
+  };
+  bool reflection = false, long_rotation = false;
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = 0; b < n; ++b)
+      if (find(copies[a] * copies[b]) == n)
+        fail("the copies are not closed under composition (S_" + std::to_string(a + 1) + " ∘ S_" +
+             std::to_string(b + 1) + ")");
+    const bool involution = (copies[a] * copies[a]).is_identity();
+    if (copies[a].determinant_of_linear_part() < 0)
+      reflection = true;
+    else if (!involution)
+      long_rotation = true;
+    if (kind == Symmetry::reflective && !involution)
+      fail("S_" + std::to_string(a + 1) + " is not a reflection or a half turn");
+  }
+  if (!reflection) fail("no copy is a reflection");
+  if (kind == Symmetry::combined && !long_rotation) fail("no copy is a rotation of order >= 3");
+  return copies;
+}
+
+/// The SVB candidates of the copies of one template: vertex p of copy k is vertex q of copy l
+/// when T_{i,l}^-1 ∘ T_{i,k} sends p to q (exact, over the template's exact boundary points). On
+/// a mirror the relative map is the reflection that fixes the mirror pointwise (Lemma 6.1).
+template <class FT>
+void copy_candidates(const core::TemplatedStructure<FT, 2>& x,
+                     const std::vector<TemplateBoundary<FT>>& boundaries,
+                     std::vector<SvbCandidate>& out) {
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    const auto& pts = boundaries[i].exact_points;
+    std::map<core::Point<FT, 2>, std::size_t, core::PointLess<FT, 2>> local;
+    for (std::size_t v = 0; v < pts.size(); ++v) local.emplace(pts[v], v);
+    const auto& list = x.instances[i];
+    for (std::size_t k = 0; k < list.size(); ++k)
+      for (std::size_t l = k + 1; l < list.size(); ++l) {
+        const auto m = list[l].transformation.inverse() * list[k].transformation;
+        SvbCandidate c{{i, k}, {i, l}, {}};
+        for (std::size_t v = 0; v < pts.size(); ++v)
+          if (const auto it = local.find(m(pts[v])); it != local.end())
+            c.pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(it->second));
+        if (!c.pairs.empty()) out.push_back(std::move(c));
+      }
+  }
+}
+
 /// The mesh template's boundary edges (edges of exactly one triangle) are exactly the line
 /// mesh's segments: then bnd(X_i) is the line mesh, with its exact points. Combinatorial only.
 bool boundary_is_line_mesh(const mesh::Mesh& m, const BoundaryInput& in, std::string* why) {
@@ -328,7 +420,9 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
 
 template <class FT>
 GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o,
-                          bool rotational = false) {
+                          Symmetry symmetry = Symmetry::none) {
+  const bool rotational = symmetry == Symmetry::rotational;
+  const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
   if (!(o.size > 0) || !std::isfinite(o.size))
     throw std::invalid_argument("--size must be a positive number");
   std::ostringstream why;
@@ -355,7 +449,16 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     two_copies.templates = x.templates;
     for (const auto& list : x.instances) two_copies.instances.push_back({list[0], list[1]});
   }
-  const auto bpp = core::boundary_patch_partition(rotational ? two_copies : x);
+  std::size_t copies = 0;
+  if (group) {
+    // Algorithms 6.1/6.4/6.5: the copy 0 of every template is the positive part (a multi-region
+    // geometry); its BPP makes the region interfaces conform, and the mirrors need nothing
+    // (Lemma 6.1: the reflection fixes them pointwise).
+    copies = symmetry_copies(x, symmetry).size();
+    two_copies.templates = x.templates;
+    for (const auto& list : x.instances) two_copies.instances.push_back({list[0]});
+  }
+  const auto bpp = core::boundary_patch_partition(rotational || group ? two_copies : x);
   r.timings.boundary_patch_partition = seconds_since(t0);
   say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
       std::to_string(bpp.mappings.size()) + " mappings");
@@ -392,7 +495,9 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.template_meshing = seconds_since(t0);
 
   t0 = Clock::now();
-  shared_vertex_bookkeeping(x, svb_candidates(x, bpp, boundaries, rotations), r.templated);
+  auto candidates = svb_candidates(x, bpp, boundaries, rotations, copies);
+  if (group) copy_candidates(x, boundaries, candidates);
+  shared_vertex_bookkeeping(x, std::move(candidates), r.templated);
   r.timings.svb = seconds_since(t0);
 
   t0 = Clock::now();
@@ -554,8 +659,16 @@ GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method me
   GenerationResult r;
   switch (method) {
   case Method::rotational:
-    r = generate(x, options, true);
+    r = generate(x, options, Symmetry::rotational);
     r.method = "rotational";
+    break;
+  case Method::reflective:
+    r = generate(x, options, Symmetry::reflective);
+    r.method = "reflective";
+    break;
+  case Method::combined:
+    r = generate(x, options, Symmetry::combined);
+    r.method = "combined";
     break;
   case Method::conventional:
     r = generate(as_region_templates(x), options);

@@ -53,12 +53,19 @@ struct GenerationResult {
 ///  rotational   Section 6.3 with Algorithm 6.2: every template instanced by the n rotations
 ///               T_{i,k} = R^k ∘ T_{i,0} (checked exactly); the BPP of the first two copies,
 ///               its mappings replicated to all n consecutive pairs for the SVB; otherwise as bpp;
+///  reflective   Algorithms 6.1/6.4 on templated input: the copies S_k (T_{i,k} = S_k ∘ T_{i,0})
+///               are I and one reflection, or the compositions of two orthogonal reflections
+///               (checked exactly); the BPP of copy 0 only (region interfaces), mirrors need
+///               nothing (Lemma 6.1); SVB: copy-0 mappings for every copy, plus the points each
+///               relative map T_{i,l}^-1 ∘ T_{i,k} sends onto template points;
+///  combined     Algorithm 6.5 likewise, the copies a dihedral group (reflection + rotation of
+///               order >= 3);
 ///  conventional the baseline of Section 7.1: per region, AT of that region's instances as one
 ///               template with one instance, through the same line meshing and mesher with the
 ///               same parameters (region boundaries stay mesh edges);
 ///  gmsh         the peer: the whole geometry, per region, meshed by Gmsh's 2D Delaunay at the
 ///               same size (Gmsh has no smallest-angle parameter).
-enum class Method { automatic, bpp, rotational, conventional, gmsh };
+enum class Method { automatic, bpp, rotational, reflective, combined, conventional, gmsh };
 
 /// \pre x is a templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
 /// std::invalid_argument for other input (and for `rotational` on a structure that is not
