@@ -103,4 +103,11 @@ expect_exit 2 "unknown method" -- "$BIN" generate data/ngon_slice_8.json --size 
 grep -q "frobnicate" "$TMP/stderr" && pass "message names the method" || fail "message: $(cat "$TMP/stderr")"
 [ ! -e "$TMP/bad4.vtu" ] && pass "no file for an unknown method" || fail "file written for an unknown method"
 expect_exit 2 "malformed JSON" -- "$BIN" generate tests/data/bad/malformed.json --size 0.1 -o "$TMP/bad5.vtu"
+for bad in open_polygon:"repeated vertex" self_intersecting_polygon:"self-intersecting"; do
+  file=${bad%%:*} what=${bad#*:}
+  expect_exit 2 "$file" -- "$BIN" generate "tests/data/bad/$file.json" --size 0.1 -o "$TMP/$file.vtu"
+  grep -q "templates\[0\].polygon.*$what" "$TMP/stderr" && pass "$file: the message names the polygon" \
+    || fail "$file: message $(cat "$TMP/stderr")"
+  [ ! -e "$TMP/$file.vtu" ] && pass "$file: no file written" || fail "$file: file written"
+done
 finish

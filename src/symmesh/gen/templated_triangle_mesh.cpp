@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <cstdint>
@@ -36,6 +37,18 @@ FT exact_from_double(double v) {
     return FT(q);
   else
     return FT(number::Cyclotomic(q));
+}
+
+/// v within 4 units in the last place: the midpoint of its certified interval when that is so
+/// narrow, else the double nearest to its exact value. (CGAL's to_double of a lazy number
+/// returns the midpoint as soon as the interval is within 1e-5 relative, which left K_128 output
+/// vertices 1e-7 off.)
+template <class FT>
+double rounded(const FT& v) {
+  const auto [lo, hi] = CGAL::to_interval(v);
+  if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
+    return lo + (hi - lo) / 2;
+  return CGAL::to_double(CGAL::exact(v));
 }
 
 /// The line mesh of one edge face: N parts; interior points get local ids first .. first+N-2.
@@ -68,8 +81,7 @@ TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, con
                                  double h) {
   TemplateBoundary<FT> tb;
   tb.exact_points = sd.points;
-  for (const auto& p : sd.points)
-    tb.input.points.push_back({CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+  for (const auto& p : sd.points) tb.input.points.push_back({rounded(p[0]), rounded(p[1])});
   tb.lines.resize(sd.faces.size());
   for (std::size_t f = 0; f < sd.faces.size(); ++f) {
     const auto& face = sd.faces[f];
@@ -85,7 +97,7 @@ TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, con
       core::Point<FT, 2> p;
       for (int d = 0; d < 2; ++d) p[d] = a[d] + (b[d] - a[d]) * t;
       tb.exact_points.push_back(p);
-      tb.input.points.push_back({CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+      tb.input.points.push_back({rounded(p[0]), rounded(p[1])});
       tb.input.segments.push_back({prev, tb.exact_points.size() - 1});
       prev = tb.exact_points.size() - 1;
     }
@@ -135,8 +147,8 @@ mapping_pairs(const core::BoundaryPatchPartition<FT, 2>& bpp, std::size_t letter
 mesh::Transformation to_double_transformation(const auto& t) {
   mesh::Transformation out;
   for (int r = 0; r < 2; ++r) {
-    for (int c = 0; c < 2; ++c) out.matrix.push_back(CGAL::to_double(t.matrix()[r][c]));
-    out.translation.push_back(CGAL::to_double(t.translation_part()[r]));
+    for (int c = 0; c < 2; ++c) out.matrix.push_back(rounded(t.matrix()[r][c]));
+    out.translation.push_back(rounded(t.translation_part()[r]));
   }
   return out;
 }
@@ -568,7 +580,7 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
       for (int k = 0; k < 2; ++k) {
         const auto& p = bnd.points[e.v[k]];
         auto [it, inserted] = index.emplace(p, in.points.size());
-        if (inserted) in.points.push_back({CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+        if (inserted) in.points.push_back({rounded(p[0]), rounded(p[1])});
         ends[std::size_t(k)] = it->second;
       }
       region.edges.push_back(ends);
