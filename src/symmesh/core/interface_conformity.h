@@ -104,6 +104,36 @@ std::optional<bool> shared_vertices_decide(const ElementComplex<FT, D>& m, const
   return std::nullopt;
 }
 
+/// A certified enclosure of the box of some points (from CGAL::to_interval of each coordinate):
+/// a filter only — boxes that do not meet certainly hold points that do not meet; every
+/// decision stays exact.
+template <class FT, int D>
+struct EnclosingBox {
+  using Bound = decltype(CGAL::to_interval(std::declval<const FT&>()).first);
+  std::array<Bound, D> lo{}, hi{};
+
+  template <class Ids>
+  static EnclosingBox of(const std::vector<Point<FT, D>>& points, const Ids& ids) {
+    EnclosingBox b;
+    bool first = true;
+    for (VertexId v : ids) {
+      for (int d = 0; d < D; ++d) {
+        const auto [l, h] = CGAL::to_interval(points[v][d]);
+        b.lo[d] = first ? l : std::min(b.lo[d], l);
+        b.hi[d] = first ? h : std::max(b.hi[d], h);
+      }
+      first = false;
+    }
+    return b;
+  }
+  /// The boxes may meet in dimensions from..D-1.
+  bool may_meet(const EnclosingBox& o, int from = 0) const {
+    for (int d = from; d < D; ++d)
+      if (hi[d] < o.lo[d] || o.hi[d] < lo[d]) return false;
+    return true;
+  }
+};
+
 /// Condition (i) for every pair of instances at once: all elements of all instances in one sweep
 /// along x over certified enclosures of their boxes (the enclosures only filter; every decision
 /// is exact), so the cost is the number of nearby element pairs, not pairs of instances times
@@ -111,36 +141,24 @@ std::optional<bool> shared_vertices_decide(const ElementComplex<FT, D>& m, const
 template <class FT, int D>
 std::map<std::pair<std::size_t, std::size_t>, std::string>
 condition_i_failures(const StructureInstance<FT, D>& si) {
-  using Bound = decltype(CGAL::to_interval(std::declval<const FT&>()).first);
   struct Item {
     std::size_t instance;
     Simplex s;
-    std::array<Bound, D> lo, hi;
+    EnclosingBox<FT, D> box;
   };
   const auto& m = si.at.mesh;
   std::vector<Item> items;
   for (std::size_t a = 0; a < si.instance_elements.size(); ++a)
-    for (const auto& s : si.instance_elements[a]) {
-      Item it{a, s, {}, {}};
-      for (int k = 0; k < s.n; ++k)
-        for (int d = 0; d < D; ++d) {
-          const auto [lo, hi] = CGAL::to_interval(m.points[s.v[k]][d]);
-          it.lo[d] = k == 0 ? lo : std::min(it.lo[d], lo);
-          it.hi[d] = k == 0 ? hi : std::max(it.hi[d], hi);
-        }
-      items.push_back(it);
-    }
+    for (const auto& s : si.instance_elements[a])
+      items.push_back({a, s, EnclosingBox<FT, D>::of(m.points, s)});
   std::stable_sort(items.begin(), items.end(),
-                   [](const Item& p, const Item& q) { return p.lo[0] < q.lo[0]; });
+                   [](const Item& p, const Item& q) { return p.box.lo[0] < q.box.lo[0]; });
   std::map<std::pair<std::size_t, std::size_t>, std::string> failed;
   for (std::size_t x = 0; x < items.size(); ++x) {
     const Item& p = items[x];
-    for (std::size_t y = x + 1; y < items.size() && !(p.hi[0] < items[y].lo[0]); ++y) {
+    for (std::size_t y = x + 1; y < items.size() && !(p.box.hi[0] < items[y].box.lo[0]); ++y) {
       const Item& q = items[y];
-      if (p.instance == q.instance || p.s == q.s) continue;
-      bool apart = false;
-      for (int d = 1; d < D && !apart; ++d) apart = p.hi[d] < q.lo[d] || q.hi[d] < p.lo[d];
-      if (apart) continue;
+      if (p.instance == q.instance || p.s == q.s || !p.box.may_meet(q.box, 1)) continue;
       const std::pair<std::size_t, std::size_t> key = std::minmax(p.instance, q.instance);
       if (failed.count(key)) continue;
       const auto shared = shared_vertices_decide<FT, D>(m, p.s, q.s);
@@ -283,25 +301,7 @@ Lemma42Verdict check_interface_conformity_on_boundaries(const TemplatedStructure
 /// (checked by the caller, e.g. gen's rotation_order)
 template <class FT, int D>
 Lemma42Verdict check_interface_conformity_up_to_rotation(const TemplatedStructure<FT, D>& x) {
-  using Bound = decltype(CGAL::to_interval(std::declval<const FT&>()).first);
-  using IBox = std::pair<std::array<Bound, D>, std::array<Bound, D>>;
-  const auto box_of_points = [](const std::vector<Point<FT, D>>& p, const auto& ids) {
-    IBox b;
-    bool first = true;
-    for (VertexId v : ids)
-      for (int d = 0; d < D; ++d) {
-        const auto [lo, hi] = CGAL::to_interval(p[v][d]);
-        b.first[d] = first ? lo : std::min(b.first[d], lo);
-        b.second[d] = first ? hi : std::max(b.second[d], hi);
-        if (d == D - 1) first = false;
-      }
-    return b;
-  };
-  const auto meet = [](const IBox& a, const IBox& b) {
-    for (int d = 0; d < D; ++d)
-      if (a.second[d] < b.first[d] || b.second[d] < a.first[d]) return false;
-    return true;
-  };
+  using IBox = EnclosingBox<FT, D>;
   StructureInstance<FT, D> si;
   si.ids = x.instance_ids();
   std::vector<std::vector<Point<FT, D>>> moved(si.ids.size());
@@ -312,7 +312,7 @@ Lemma42Verdict check_interface_conformity_up_to_rotation(const TemplatedStructur
     if (si.ids[a].g == 0) {
       std::vector<VertexId> all(moved[a].size());
       for (std::size_t v = 0; v < all.size(); ++v) all[v] = VertexId(v);
-      copy0_boxes.push_back(box_of_points(moved[a], all));
+      copy0_boxes.push_back(IBox::of(moved[a], all));
     }
   }
   std::map<Point<FT, D>, VertexId, PointLess<FT, D>> index;
@@ -321,9 +321,9 @@ Lemma42Verdict check_interface_conformity_up_to_rotation(const TemplatedStructur
   for (std::size_t a = 0; a < si.ids.size(); ++a)
     for (const auto& e : x.templates[si.ids[a].i].mesh.elements) {
       if (si.ids[a].g != 0) {
-        const auto b = box_of_points(moved[a], e);
+        const auto b = IBox::of(moved[a], e);
         if (std::none_of(copy0_boxes.begin(), copy0_boxes.end(),
-                         [&](const IBox& c) { return meet(b, c); }))
+                         [&](const IBox& c) { return b.may_meet(c); }))
           continue;
       }
       std::array<VertexId, 4> g{};
