@@ -17,6 +17,7 @@
 // interfaces are not conforming): the checker reports condition (i) on a neighbouring pair and
 // the structure instance is not conforming, although the instances do not overlap (Eq. 4.2).
 #include "proofs-checks/cyclotomic_generators.h"
+#include "proofs-checks/line_mesh_cases.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/core/interface_conformity.h"
 
@@ -100,6 +101,25 @@ void rotation_reduction_without_invariance(const RotationalStructure& s) {
                        picture(s));
 }
 
+/// spec/lemmas.md#lemma-4-2-line-meshes over K_m: the boundary complexes split uniformly for a
+/// random size h, decided face by face for all pairs and up to the rotation (pairs with copy 0);
+/// both verdicts equal the direct check of AT of the written-out line meshes. `rotation` is the
+/// count passed as rotation_copies (0: all pairs only).
+void line_mesh_reduction_equals_direct(const RotationalStructure& s, std::size_t rotation) {
+  const int num = *rc::gen::inRange(1, 4), den = *rc::gen::inRange(1, 9);
+  const Cyclotomic h = Cyclotomic(mpq_class(num, den));
+  for (const std::size_t r : {std::size_t(0), rotation}) {
+    const auto c = uniform_case<Cyclotomic>(s.x, h, r);
+    const auto v = line_mesh_verdicts(c);
+    RC_TAG(v.direct ? "AT conforming" : "AT not conforming");
+    auto t = s;
+    t.x = c.actual;
+    t.recipe = "line meshes for h = " + std::to_string(num) + "/" + std::to_string(den) +
+               (r > 0 ? ", up to the rotation, of " : ", all pairs, of ") + s.recipe;
+    SYMMESH_PROOF_ASSERT(v.face_by_face == v.direct, record(t), picture(t));
+  }
+}
+
 void conclusion_only(const RotationalStructure& s) {
   SYMMESH_PROOF_ASSERT(core::structure_instance_conforming(core::apply_template(s.x)), record(s),
                        picture(s));
@@ -176,6 +196,22 @@ void register_lemma_4_2_cyclotomic(std::vector<Property>& p) {
                [] {
                  return rc::detail::toProperty(
                      [] { rotation_reduction_equals_direct(*not_rotation_invariant()); });
+               }});
+  p.push_back({kLemma, "cyclotomic_line_mesh_reduction_agrees_2d", 2, Kind::holds,
+               "Lemma 4.2 face by face on uniform line meshes over K_m (spec/lemmas.md#lemma-4-2-"
+               "line-meshes): the boundary complexes of rotational structures split for a random "
+               "size, decided for all pairs and up to the rotation; both verdicts equal the "
+               "direct check of AT of the written-out line meshes",
+               [] {
+                 return rc::detail::toProperty([] {
+                   const auto s = *rotational_structure(chance(50));
+                   well_formed(s, true);
+                   line_mesh_reduction_equals_direct(s, std::size_t(s.n));
+                 });
+               },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { line_mesh_reduction_equals_direct(*not_rotation_invariant(), 1); });
                }});
   p.push_back(
       {kLemma,

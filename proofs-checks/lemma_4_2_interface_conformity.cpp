@@ -10,6 +10,7 @@
 // all elements of the structure instance). Both must agree: the lemma gives "checker ⇒ direct",
 // its converse (AT conforming ⇒ (i), (ii) for structures obeying Eq. 4.2) gives the other way.
 #include "proofs-checks/generators.h"
+#include "proofs-checks/line_mesh_cases.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/core/interface_conformity.h"
 
@@ -224,11 +225,139 @@ void add(std::vector<Property>& p) {
        {}});
 }
 
+// ----- spec/lemmas.md#lemma-4-2-line-meshes ---------------------------------------------------
+
+struct LineCase {
+  LineMeshCase<Exact> c;
+  std::string recipe;
+};
+std::ostream& operator<<(std::ostream& os, const LineCase& l) {
+  return os << l.recipe;
+}
+
+GeneratedStructure<2> as_generated(const LineCase& l) {
+  GeneratedStructure<2> s;
+  s.x = l.c.actual;
+  s.recipe = l.recipe;
+  return s;
+}
+
+/// A templated structure of the generator (Eq. 4.2 holds) with its boundary complexes split
+/// uniformly for a random size h.
+rc::Gen<LineCase> uniform_line_case() {
+  return rc::gen::exec([] {
+    const auto s = *templated_structure<2>();
+    const int num = *rc::gen::inRange(1, 4), den = *rc::gen::inRange(1, 5);
+    LineCase l;
+    l.c = uniform_case<Exact>(s.x, Exact(num) / Exact(den));
+    l.recipe = "uniform line meshes (h = " + std::to_string(num) + "/" + std::to_string(den) +
+               ") of " + s.recipe;
+    return l;
+  });
+}
+
+/// The uniform hypothesis dropped: two squares of side s side by side (identity and translation
+/// by (s, 0), after one random global motion), the shared side split into n parts on both, but
+/// the square's right side at the parameters k/n + 1/(3n) instead of k/n. Same ends, same N.
+rc::Gen<LineCase> non_uniform_shared_side() {
+  return rc::gen::exec([] {
+    const int side = *rc::gen::inRange(1, 5), n = *rc::gen::inRange(2, 6);
+    const int motion = *rc::gen::inRange(0, 3);
+    const Exact s(side);
+    const auto pt = [](const Exact& x, const Exact& y) {
+      Point<2> p;
+      p[0] = x;
+      p[1] = y;
+      return p;
+    };
+    core::UniformLineMesh<Exact> u;
+    u.points = {pt(0, 0), pt(s, 0), pt(s, s), pt(0, s)};
+    u.faces = {{0, 1, 1}, {1, 2, std::size_t(n)}, {2, 3, 1}, {3, 0, std::size_t(n)}};
+    using Motion = core::RigidTransformation<Exact, 2>;
+    const Motion g = motion == 0   ? Motion()
+                     : motion == 1 ? Motion::rotation_2d(Exact(3) / 5, Exact(4) / 5, pt(1, 2))
+                                   : Motion::translation(pt(Exact(7) / 3, Exact(-1) / 2));
+    LineCase l;
+    l.c.lines.templates = {u};
+    l.c.lines.instances = {{{g, 1}, {g * Motion::translation(pt(s, 0)), 1}}};
+    // The line meshes actually written: the right side (face 1) non-uniform.
+    core::Template<Exact, 2> t{"square", core::TemplateKind::mesh, {}};
+    t.mesh.points = u.points;
+    for (std::size_t f = 0; f < u.faces.size(); ++f) {
+      const auto& face = u.faces[f];
+      core::VertexId prev = face.a;
+      t.mesh.elements.push_back(core::Simplex{face.a});
+      for (std::size_t k = 1; k < face.parts; ++k) {
+        Exact param = Exact(int(k)) / Exact(n);
+        if (f == 1) param += Exact(1) / Exact(3 * n);
+        Point<2> q;
+        for (int d = 0; d < 2; ++d)
+          q[d] = u.points[face.a][d] + (u.points[face.b][d] - u.points[face.a][d]) * param;
+        t.mesh.points.push_back(q);
+        const auto v = core::VertexId(t.mesh.points.size() - 1);
+        t.mesh.elements.push_back(core::Simplex{v});
+        t.mesh.elements.push_back(core::Simplex{std::min(prev, v), std::max(prev, v)});
+        prev = v;
+      }
+      t.mesh.elements.push_back(core::Simplex{std::min(prev, face.b), std::max(prev, face.b)});
+    }
+    t.mesh.normalize();
+    l.c.actual.templates = {t};
+    l.c.actual.instances = l.c.lines.instances;
+    l.recipe = "two squares of side " + std::to_string(side) + " side by side (motion " +
+               std::to_string(motion) + "), shared side split into " + std::to_string(n) +
+               " parts, non-uniformly on one square";
+    return l;
+  });
+}
+
+void line_mesh_reduction_equals_direct(const LineCase& l) {
+  const auto v = line_mesh_verdicts(l.c);
+  RC_TAG(v.direct ? "AT conforming" : "AT not conforming");
+  SYMMESH_PROOF_ASSERT(v.face_by_face == v.direct, record(as_generated(l)),
+                       picture(as_generated(l)));
+}
+
+void line_mesh_reduction_without_uniform_split(const LineCase& l) {
+  const auto v = line_mesh_verdicts(l.c);
+  SYMMESH_PROOF_ASSERT(v.face_by_face && !v.direct, record(as_generated(l)),
+                       picture(as_generated(l)));
+}
+
+void add_line_meshes(std::vector<Property>& p) {
+  p.push_back({kLemma, "line_mesh_reduction_agrees_2d", 2, Kind::holds,
+               "Lemma 4.2 face by face on uniform line meshes (spec/lemmas.md#lemma-4-2-line-"
+               "meshes; the generator's certificate): on the boundary complexes of templated "
+               "structures split for a random size, the verdict equals the direct conformity "
+               "check of AT of the written-out line meshes",
+               [] {
+                 return rc::detail::toProperty(
+                     [] { line_mesh_reduction_equals_direct(*uniform_line_case()); });
+               },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { line_mesh_reduction_equals_direct(*non_uniform_shared_side()); });
+               }});
+  p.push_back({kLemma,
+               "line_mesh_reduction_needs_uniform_split_2d",
+               2,
+               Kind::counterexample,
+               "Without the uniform split the face-by-face decision is unsound: two squares "
+               "whose shared side has the same ends and N on both, split non-uniformly on one, "
+               "are certified while AT is not conforming",
+               [] {
+                 return rc::detail::toProperty(
+                     [] { line_mesh_reduction_without_uniform_split(*non_uniform_shared_side()); });
+               },
+               {}});
+}
+
 } // namespace
 
 void register_lemma_4_2(std::vector<Property>& p) {
   add<2>(p);
   add<3>(p);
+  add_line_meshes(p);
 }
 
 } // namespace symmesh::proofs

@@ -32,6 +32,9 @@ struct BppOptions {
   /// of a domain vertex under a distinct composition); exceeding it throws
   /// CompositionLimitExceeded instead of running on.
   std::size_t max_compositions = 20000;
+  /// The caller has checked x.is_well_formed() (an exact conformity check of every template);
+  /// the BPP does not repeat it.
+  bool well_formed_checked = false;
 };
 
 /// A face of some template: (template, face index in that template's subdivision).

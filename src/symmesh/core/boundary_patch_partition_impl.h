@@ -210,9 +210,9 @@ std::vector<DomainPiece<FT, D>> pull_back(const std::vector<DomainPiece<FT, D>>&
 
 template <class FT, int D>
 std::vector<TemplateBoundaryMapping<FT, D>>
-template_boundary_mappings(const TemplatedStructure<FT, D>& x) {
+template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed) {
   std::ostringstream why;
-  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  if (check_well_formed && !x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   std::vector<TemplateBoundaryMapping<FT, D>> out;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     TemplateBoundaryMapping<FT, D> id;
@@ -653,7 +653,7 @@ template <class FT, int D>
 BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<FT, D>& x,
                                                        const BppOptions& options) {
   BoundaryPatchPartition<FT, D> r;
-  r.mappings = template_boundary_mappings(x);
+  r.mappings = template_boundary_mappings(x, !options.well_formed_checked);
   const std::size_t nt = x.templates.size();
   const auto ix = index_mappings<FT, D>(r.mappings, nt);
   if constexpr (D == 2)
@@ -1168,7 +1168,7 @@ VertexMovement<FT, D> valid_vertex_movement(const BoundaryPatchPartition<FT, D>&
 
 #define SYMMESH_BPP_INSTANTIATE(FT, D)                                                             \
   template std::vector<TemplateBoundaryMapping<FT, D>> template_boundary_mappings<FT, D>(          \
-      const TemplatedStructure<FT, D>&);                                                           \
+      const TemplatedStructure<FT, D>&, bool);                                                     \
   template BoundaryPatchPartition<FT, D> boundary_patch_partition<FT, D>(                          \
       const TemplatedStructure<FT, D>&, const BppOptions&);                                        \
   template struct BoundaryPatchPartition<FT, D>;                                                   \

@@ -66,10 +66,11 @@ struct TemplateBoundaryMapping {
 /// All template boundary mappings of X: one trivial identity per template (𝕋_{T_{i,1},T_{i,1}})
 /// and, for every ordered pair of distinct neighbouring instances (Section 4.2), 𝕋_{T_a,T_b}.
 /// The list is closed under inverses (Section 4.3: 𝕋_{a,b}^{-1} = 𝕋_{b,a}) and ordered
-/// deterministically. \pre x.is_well_formed() and no two instances overlap (Eq. 4.2)
+/// deterministically. \pre x.is_well_formed() (checked unless `check_well_formed` is false:
+/// the caller has checked it) and no two instances overlap (Eq. 4.2)
 template <class FT, int D>
 std::vector<TemplateBoundaryMapping<FT, D>>
-template_boundary_mappings(const TemplatedStructure<FT, D>& x);
+template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed = true);
 
 /// A composition of template boundary mappings (Def A.2): letters[0] is applied first. The
 /// rigid map is the product of the letters' maps; its domain is the set of points on which every

@@ -3,7 +3,7 @@
 #include "symmesh/gen/templated_triangle_mesh.h"
 
 #include "symmesh/core/boundary_patch_partition.h"
-#include "symmesh/core/interface_conformity.h"
+#include "symmesh/core/line_mesh_conformity.h"
 #include "symmesh/gen/gmsh_mesher.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/mesh/union_find.h"
@@ -51,9 +51,10 @@ double rounded(const FT& v) {
   return CGAL::to_double(CGAL::exact(v));
 }
 
-/// The line mesh of one edge face: N parts; interior points get local ids first .. first+N-2.
+/// The line mesh of one edge face [a, b] (subdivision point ids): N parts; interior points get
+/// local ids first .. first+N-2.
 struct FaceLine {
-  std::size_t n = 1, first = 0;
+  std::size_t a = 0, b = 0, n = 0, first = 0; ///< n = 0: a vertex face
 };
 
 template <class FT>
@@ -68,13 +69,29 @@ std::size_t parts_for(const core::Point<FT, 2>& a, const core::Point<FT, 2>& b, 
   return n;
 }
 
-/// Template t's boundary: subdivision points, then the interior points of each edge's line mesh.
+/// Template t's boundary: the subdivision points (exact), and per edge face its line mesh, whose
+/// k-th point is exactly a + (k/N)(b − a) (core::line_mesh_point); the mesher gets the points in
+/// double: the subdivision points rounded from their exact values (rounded()), the interior
+/// points interpolated in double between the rounded ends (within a few units of roundoff of the
+/// exact points; conformity never depends on it, the SVB identifies them by index).
 template <class FT>
 struct TemplateBoundary {
-  std::vector<core::Point<FT, 2>> exact_points; ///< exact coordinates of every boundary point
-  std::vector<FaceLine> lines;                  ///< per subdivision face (edges only)
+  std::vector<core::Point<FT, 2>> exact_points; ///< exact coordinates of the subdivision points
+  std::vector<FaceLine> lines;                  ///< per subdivision face (n = 0: not an edge)
   BoundaryInput input;
 };
+
+/// Every boundary point of the template exactly, in local ids (subdivision points, then the
+/// interior points of each line mesh).
+template <class FT>
+std::vector<core::Point<FT, 2>> all_exact_points(const TemplateBoundary<FT>& tb) {
+  auto out = tb.exact_points;
+  for (const auto& line : tb.lines)
+    for (std::size_t k = 1; k < line.n; ++k)
+      out.push_back(
+          core::line_mesh_point<FT>(tb.exact_points[line.a], tb.exact_points[line.b], k, line.n));
+  return out;
+}
 
 template <class FT>
 TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, const FT& h2,
@@ -86,22 +103,20 @@ TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, con
   for (std::size_t f = 0; f < sd.faces.size(); ++f) {
     const auto& face = sd.faces[f];
     if (face.dimension != 1) continue;
-    const auto& a = sd.points[face.vertices[0]];
-    const auto& b = sd.points[face.vertices[1]];
     FaceLine& line = tb.lines[f];
-    line.n = parts_for<FT>(a, b, h2, h);
-    line.first = tb.exact_points.size();
-    std::size_t prev = face.vertices[0];
+    line.a = face.vertices[0];
+    line.b = face.vertices[1];
+    line.n = parts_for<FT>(sd.points[line.a], sd.points[line.b], h2, h);
+    line.first = tb.input.points.size();
+    const auto a = tb.input.points[line.a], b = tb.input.points[line.b];
+    std::size_t prev = line.a;
     for (std::size_t k = 1; k < line.n; ++k) {
-      const FT t = exact_from_double<FT>(double(k)) / exact_from_double<FT>(double(line.n));
-      core::Point<FT, 2> p;
-      for (int d = 0; d < 2; ++d) p[d] = a[d] + (b[d] - a[d]) * t;
-      tb.exact_points.push_back(p);
-      tb.input.points.push_back({rounded(p[0]), rounded(p[1])});
-      tb.input.segments.push_back({prev, tb.exact_points.size() - 1});
-      prev = tb.exact_points.size() - 1;
+      const double t = double(k) / double(line.n);
+      tb.input.points.push_back({a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t});
+      tb.input.segments.push_back({prev, tb.input.points.size() - 1});
+      prev = tb.input.points.size() - 1;
     }
-    tb.input.segments.push_back({prev, face.vertices[1]});
+    tb.input.segments.push_back({prev, line.b});
   }
   return tb;
 }
@@ -203,9 +218,13 @@ std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& 
   return out;
 }
 
-/// Compact SVB: one table per distinct set of pairs, and a spanning set of instance pairs.
+/// Compact SVB: one table per distinct set of pairs, and a spanning set of instance pairs. The
+/// union-find runs over the boundary vertices only (the mesher numbers the line-mesh points
+/// first, and only they are ever identified), so its size is the boundary size, not the cell
+/// count.
 template <class FT>
 void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
+                               const std::vector<TemplateBoundary<FT>>& boundaries,
                                std::vector<SvbCandidate> candidates,
                                mesh::TemplatedMeshCompactSvb& out) {
   std::vector<std::size_t> instance_offset, vertex_offset;
@@ -214,11 +233,11 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
     instance_offset.push_back(instances);
     vertex_offset.push_back(vertices);
     instances += x.instances[i].size();
-    vertices += x.instances[i].size() * out.templated.templates[i].mesh.vertex_count();
+    vertices += x.instances[i].size() * boundaries[i].input.points.size();
   }
   const auto global_instance = [&](core::InstanceId id) { return instance_offset[id.i] + id.g; };
   const auto first_vertex = [&](core::InstanceId id) {
-    return vertex_offset[id.i] + id.g * out.templated.templates[id.i].mesh.vertex_count();
+    return vertex_offset[id.i] + id.g * boundaries[id.i].input.points.size();
   };
   // Interfaces with many identified vertices first, so point contacts implied by them drop out.
   std::stable_sort(
@@ -231,9 +250,13 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
       table_of;
   for (const auto& c : candidates) {
     bool adds = false;
-    for (auto [a, b] : c.pairs)
+    for (auto [a, b] : c.pairs) {
+      if (std::size_t(a) >= boundaries[c.from.i].input.points.size() ||
+          std::size_t(b) >= boundaries[c.to.i].input.points.size())
+        throw std::logic_error("SVB: an identified vertex is not a boundary vertex");
       adds = uf.unite(first_vertex(c.from) + std::size_t(a), first_vertex(c.to) + std::size_t(b)) ||
              adds;
+    }
     if (!adds) continue;
     auto key = std::make_tuple(c.from.i, c.to.i, c.pairs);
     auto [it, inserted] = table_of.emplace(std::move(key), out.tables.size());
@@ -245,9 +268,42 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
   }
 }
 
+/// The common case of rotation_order, decided without products: every T_{i,k} is exactly the
+/// rotation by 2πk/n about the origin (so T_{i,0} = I and R = rot(2π/n), of order n), each entry
+/// compared with the field's own value of cos / sin (elements of K_m are equal iff their
+/// coefficients are). False: not this case (the general check decides).
+template <class FT>
+bool rotations_about_origin(const core::TemplatedStructure<FT, 2>& x, std::size_t n) {
+  if constexpr (!std::is_same_v<FT, LazyCyclotomic>) {
+    return false;
+  } else {
+    number::CyclotomicFieldPtr field;
+    for (const auto& list : x.instances)
+      for (const auto& inst : list)
+        for (const auto& row : inst.transformation.matrix())
+          for (const auto& v : row)
+            if (!field) field = CGAL::exact(v).field();
+    if (!field || field->m() % long(n) != 0 || field->m() % 4 != 0) return false;
+    const LazyCyclotomic zero(0);
+    for (const auto& list : x.instances)
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto& t = list[k].transformation;
+        const LazyCyclotomic c(field->cos_2pi(long(k), long(n))),
+            s(field->sin_2pi(long(k), long(n)));
+        const auto& m = t.matrix();
+        if (!(m[0][0] == c && m[1][1] == c && m[1][0] == s && m[0][1] == -s &&
+              t.translation_part()[0] == zero && t.translation_part()[1] == zero))
+          return false;
+      }
+    return true;
+  }
+}
+
 /// Section 6.3 with Algorithm 6.2: the number n of rotated copies when every template's
 /// instances are T_{i,k} = R^k ∘ T_{i,0} for one rotation R ≠ I with R^n = I (exact), else 0
-/// with the reason in `why`.
+/// with the reason in `why`. R = T_{1,2} ∘ T_{1,1}^-1; the check is T_{i,k} = R ∘ T_{i,k-1} for
+/// k = 1..n, indices mod n (so R^n ∘ T_{i,0} = T_{i,0}, i.e. R^n = I): one product per instance.
+/// (R^d = I for some d < n would repeat an instance, which Eq. 4.2 refuses.)
 template <class FT>
 std::size_t rotation_order(const core::TemplatedStructure<FT, 2>& x, std::string& why) {
   const std::size_t n = x.instances.empty() ? 0 : x.instances[0].size();
@@ -255,30 +311,28 @@ std::size_t rotation_order(const core::TemplatedStructure<FT, 2>& x, std::string
     why = "template '" + x.templates[0].name + "' needs at least 2 rotated instances";
     return 0;
   }
-  const auto r = x.instances[0][1].transformation * x.instances[0][0].transformation.inverse();
-  if (r.is_identity() || !(r.determinant_of_linear_part() > 0)) {
-    why = "T_{1,2} ∘ T_{1,1}^-1 is not a rotation";
-    return 0;
-  }
-  std::vector<core::RigidTransformation<FT, 2>> power{core::RigidTransformation<FT, 2>()};
-  for (std::size_t k = 1; k <= n; ++k) power.push_back(r * power.back());
-  if (!power[n].is_identity()) {
-    why = "the rotation T_{1,2} ∘ T_{1,1}^-1 does not have order " + std::to_string(n);
-    return 0;
-  }
-  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
     if (x.instances[i].size() != n) {
       why = "template '" + x.templates[i].name + "' has " + std::to_string(x.instances[i].size()) +
             " instances, not the " + std::to_string(n) + " rotated copies";
       return 0;
     }
-    for (std::size_t k = 1; k < n; ++k)
-      if (!(x.instances[i][k].transformation == power[k] * x.instances[i][0].transformation)) {
-        why = "T_{" + std::to_string(i + 1) + "," + std::to_string(k + 1) + "} is not R^" +
-              std::to_string(k) + " ∘ T_{" + std::to_string(i + 1) + ",1}";
+  if (rotations_about_origin(x, n)) return n;
+  const auto r = x.instances[0][1].transformation * x.instances[0][0].transformation.inverse();
+  if (r.is_identity() || !(r.determinant_of_linear_part() > 0)) {
+    why = "T_{1,2} ∘ T_{1,1}^-1 is not a rotation";
+    return 0;
+  }
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    for (std::size_t k = 1; k <= n; ++k) {
+      if (i == 0 && k == 1) continue; // R's definition
+      if (!(x.instances[i][k % n].transformation == r * x.instances[i][k - 1].transformation)) {
+        why = k < n ? "T_{" + std::to_string(i + 1) + "," + std::to_string(k + 1) +
+                          "} is not R ∘ T_{" + std::to_string(i + 1) + "," + std::to_string(k) + "}"
+                    : "the rotation T_{1,2} ∘ T_{1,1}^-1 does not have order " + std::to_string(n);
         return 0;
       }
-  }
+    }
   return n;
 }
 
@@ -348,7 +402,7 @@ void copy_candidates(const core::TemplatedStructure<FT, 2>& x,
                      const std::vector<TemplateBoundary<FT>>& boundaries,
                      std::vector<SvbCandidate>& out) {
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
-    const auto& pts = boundaries[i].exact_points;
+    const auto pts = all_exact_points(boundaries[i]);
     std::map<core::Point<FT, 2>, std::size_t, core::PointLess<FT, 2>> local;
     for (std::size_t v = 0; v < pts.size(); ++v) local.emplace(pts[v], v);
     const auto& list = x.instances[i];
@@ -397,15 +451,18 @@ bool boundary_is_line_mesh(const mesh::Mesh& m, const BoundaryInput& in, std::st
 
 /// Lemma 4.2, exactly, on the templates' boundary complexes (spec/lemmas.md#lemma-4-2-boundary):
 /// the instances' interiors are disjoint (checked before meshing), so every non-conformity of
-/// AT lies between transformed boundary elements. Each boundary complex is the line mesh with
-/// its exact points, after checking that the mesher kept it as the template's boundary.
-/// `rotational`: x was checked to be invariant under its rotation (rotation_order), so the check
-/// runs up to the rotation (spec/lemmas.md#lemma-4-2-rotational).
+/// AT lies between transformed boundary elements. Each boundary complex is the uniform line mesh
+/// of the subdivision faces, after checking that the mesher kept it as the template's boundary;
+/// the check then runs face pair by face pair (spec/lemmas.md#lemma-4-2-line-meshes).
+/// `rotations` > 0: x was checked to be invariant under its rotation of that order
+/// (rotation_order), so only the pairs with a copy 0 are decided
+/// (spec/lemmas.md#lemma-4-2-rotational).
 template <class FT>
 core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
                              const std::vector<TemplateBoundary<FT>>& boundaries,
-                             const mesh::TemplatedMesh& tm, bool rotational) {
-  core::TemplatedStructure<FT, 2> bnd;
+                             const mesh::TemplatedMesh& tm, std::size_t rotations) {
+  core::LineMeshStructure<FT> lines;
+  lines.instances = x.instances;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     const auto& b = boundaries[i];
     std::string why;
@@ -416,18 +473,13 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
       v.detail = "template '" + x.templates[i].name + "': " + why;
       return v;
     }
-    core::Template<FT, 2> t{x.templates[i].name, core::TemplateKind::mesh, {}};
-    t.mesh.points = b.exact_points;
-    for (const auto& s : b.input.segments)
-      t.mesh.elements.push_back(core::Simplex{core::VertexId(s[0]), core::VertexId(s[1])});
-    t.mesh.normalize();
-    t.mesh = core::face_completion(t.mesh);
-    t.mesh.normalize();
-    bnd.templates.push_back(std::move(t));
-    bnd.instances.push_back(x.instances[i]);
+    core::UniformLineMesh<FT> t;
+    t.points = b.exact_points;
+    for (const auto& line : b.lines)
+      if (line.n > 0) t.faces.push_back({core::VertexId(line.a), core::VertexId(line.b), line.n});
+    lines.templates.push_back(std::move(t));
   }
-  if (rotational) return core::check_interface_conformity_up_to_rotation(bnd);
-  return core::check_interface_conformity(bnd, core::apply_template(bnd));
+  return core::check_line_mesh_conformity(lines, rotations);
 }
 
 template <class FT>
@@ -441,23 +493,30 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   if (!x.all_of_kind(core::TemplateKind::geometry))
     throw std::invalid_argument("Algorithm 5.6 needs geometry templates (\"kind\": \"geometry\")");
-  if (const auto overlap = core::find_instance_overlap(x))
+  // The rotational check comes first (timed with the BPP, whose shortcut it licenses): it lets
+  // Eq. 4.2 be checked up to the rotation too.
+  std::size_t rotations = 0;
+  double symmetry_seconds = 0;
+  if (rotational) {
+    const auto ts = Clock::now();
+    std::string reason;
+    rotations = rotation_order(x, reason);
+    if (rotations == 0)
+      throw std::invalid_argument("--method rotational: not a rotational slice structure: " +
+                                  reason);
+    symmetry_seconds = seconds_since(ts);
+  }
+  if (const auto overlap = core::find_instance_overlap(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
   const auto say = [&](const std::string& s) {
     if (o.progress) o.progress(s);
   };
   GenerationResult r;
   auto t0 = Clock::now();
-  std::size_t rotations = 0;
   core::TemplatedStructure<FT, 2> two_copies;
   if (rotational) {
     // Algorithm 6.2: the slice's two half-lines are all the BPP needs; the first two rotated
     // copies show both (every other neighbouring pair is a rotation of theirs).
-    std::string reason;
-    rotations = rotation_order(x, reason);
-    if (rotations == 0)
-      throw std::invalid_argument("--method rotational: not a rotational slice structure: " +
-                                  reason);
     two_copies.templates = x.templates;
     for (const auto& list : x.instances) two_copies.instances.push_back({list[0], list[1]});
   }
@@ -470,8 +529,11 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     two_copies.templates = x.templates;
     for (const auto& list : x.instances) two_copies.instances.push_back({list[0]});
   }
-  const auto bpp = core::boundary_patch_partition(rotational || group ? two_copies : x);
-  r.timings.boundary_patch_partition = seconds_since(t0);
+  core::BppOptions bpp_options;
+  bpp_options.well_formed_checked = true; // above, on x (two_copies has x's templates)
+  const auto bpp =
+      core::boundary_patch_partition(rotational || group ? two_copies : x, bpp_options);
+  r.timings.boundary_patch_partition = symmetry_seconds + seconds_since(t0);
   say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
       std::to_string(bpp.mappings.size()) + " mappings");
 
@@ -509,11 +571,11 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   t0 = Clock::now();
   auto candidates = svb_candidates(x, bpp, boundaries, rotations, copies);
   if (group) copy_candidates(x, boundaries, candidates);
-  shared_vertex_bookkeeping(x, std::move(candidates), r.templated);
+  shared_vertex_bookkeeping(x, boundaries, std::move(candidates), r.templated);
   r.timings.svb = seconds_since(t0);
 
   t0 = Clock::now();
-  const auto verdict = certify(x, boundaries, tm, rotational);
+  const auto verdict = certify(x, boundaries, tm, rotations);
   r.timings.certificate = seconds_since(t0);
   r.lemma_4_2_holds = verdict.holds;
   if (!verdict.holds)
