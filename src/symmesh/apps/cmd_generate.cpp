@@ -44,7 +44,8 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const
                                                    {"reflective", gen::Method::reflective},
                                                    {"combined", gen::Method::combined},
                                                    {"conventional", gen::Method::conventional},
-                                                   {"gmsh", gen::Method::gmsh}};
+                                                   {"gmsh", gen::Method::gmsh},
+                                                   {"sao", gen::Method::sao}};
   const auto method = methods.at(o.method);
   return gen::generate_triangle_mesh(x, method, g);
 }
@@ -54,15 +55,9 @@ int run_generate(const GenerateOptions& o) {
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  if (o.method == "sao") {
-    print_error("--method " + o.method +
-                ": not implemented yet (this version has auto, bpp, rotational, reflective, "
-                "combined, conventional and gmsh)");
-    return bad_input;
-  }
   if (o.method != "auto" && o.method != "bpp" && o.method != "rotational" &&
       o.method != "reflective" && o.method != "combined" && o.method != "conventional" &&
-      o.method != "gmsh") {
+      o.method != "gmsh" && o.method != "sao") {
     print_error("--method " + o.method +
                 ": unknown (use auto, bpp, reflective, rotational, sao, combined, conventional "
                 "or gmsh)");
@@ -181,8 +176,10 @@ void add_generate(CLI::App& app, int& exit_code) {
                   "auto (rotational when the structure is one, else bpp) | bpp (Algorithm 5.6) | "
                   "rotational (slices of a rotational symmetry, Section 6.3/Algorithm 6.2) | "
                   "reflective (Algorithms 6.1/6.4) | combined (reflective-rotational, Algorithm "
-                  "6.5) | conventional (same mesher on the whole geometry) | gmsh (Gmsh 2D "
-                  "Delaunay on the whole geometry); sao is not implemented yet")
+                  "6.5) | sao (small-angle optimisation, Section 6.3.2: a rotational slice is "
+                  "cut into a centre n-gon and a ring slice, and the line meshes are refined "
+                  "until every triangle meets --min-angle) | conventional (same mesher on the "
+                  "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry)")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out, "structure instance: .vtu, .msh (4.1) or .mesh")
       ->required();

@@ -79,6 +79,7 @@ struct TemplateBoundary {
   std::vector<core::Point<FT, 2>> exact_points; ///< exact coordinates of the subdivision points
   std::vector<FaceLine> lines;                  ///< per subdivision face (n = 0: not an edge)
   BoundaryInput input;
+  std::vector<std::size_t> segment_face; ///< per input segment, its subdivision face
 };
 
 /// Every boundary point of the template exactly, in local ids (subdivision points, then the
@@ -93,9 +94,10 @@ std::vector<core::Point<FT, 2>> all_exact_points(const TemplateBoundary<FT>& tb)
   return out;
 }
 
+/// `parts`: N per subdivision face when given (the sao refinement), else N from the size.
 template <class FT>
-TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, const FT& h2,
-                                 double h) {
+TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, const FT& h2, double h,
+                                 const std::vector<std::size_t>* parts = nullptr) {
   TemplateBoundary<FT> tb;
   tb.exact_points = sd.points;
   for (const auto& p : sd.points) tb.input.points.push_back({rounded(p[0]), rounded(p[1])});
@@ -106,7 +108,7 @@ TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, con
     FaceLine& line = tb.lines[f];
     line.a = face.vertices[0];
     line.b = face.vertices[1];
-    line.n = parts_for<FT>(sd.points[line.a], sd.points[line.b], h2, h);
+    line.n = parts ? (*parts)[f] : parts_for<FT>(sd.points[line.a], sd.points[line.b], h2, h);
     line.first = tb.input.points.size();
     const auto a = tb.input.points[line.a], b = tb.input.points[line.b];
     std::size_t prev = line.a;
@@ -114,9 +116,11 @@ TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, con
       const double t = double(k) / double(line.n);
       tb.input.points.push_back({a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t});
       tb.input.segments.push_back({prev, tb.input.points.size() - 1});
+      tb.segment_face.push_back(f);
       prev = tb.input.points.size() - 1;
     }
     tb.input.segments.push_back({prev, line.b});
+    tb.segment_face.push_back(f);
   }
   return tb;
 }
@@ -284,15 +288,18 @@ bool rotations_about_origin(const core::TemplatedStructure<FT, 2>& x, std::size_
           for (const auto& v : row)
             if (!field) field = CGAL::exact(v).field();
     if (!field || field->m() % long(n) != 0 || field->m() % 4 != 0) return false;
-    const LazyCyclotomic zero(0);
+    // The input entries are exact leaves: compare their exact values (coefficient vectors).
+    const auto value = [](const LazyCyclotomic& v) -> const number::Cyclotomic& {
+      return CGAL::exact(v);
+    };
     for (const auto& list : x.instances)
       for (std::size_t k = 0; k < n; ++k) {
         const auto& t = list[k].transformation;
-        const LazyCyclotomic c(field->cos_2pi(long(k), long(n))),
-            s(field->sin_2pi(long(k), long(n)));
+        const auto c = field->cos_2pi(long(k), long(n)), s = field->sin_2pi(long(k), long(n));
         const auto& m = t.matrix();
-        if (!(m[0][0] == c && m[1][1] == c && m[1][0] == s && m[0][1] == -s &&
-              t.translation_part()[0] == zero && t.translation_part()[1] == zero))
+        if (!(value(m[0][0]) == c && value(m[1][1]) == c && value(m[1][0]) == s &&
+              value(m[0][1]) == -s && value(t.translation_part()[0]).is_zero() &&
+              value(t.translation_part()[1]).is_zero()))
           return false;
       }
     return true;
@@ -482,9 +489,67 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
   return core::check_line_mesh_conformity(lines, rotations);
 }
 
+/// spec/generation.md#sao: mesh every template with the full Delaunay refinement (which may
+/// split boundary segments); wherever it split a segment of face f, double N on every face
+/// related to f by a template boundary mapping (so mapped faces keep equal N and the old split
+/// points stay), and mesh again, until no template needs a boundary split. Then every triangle
+/// meets the shape criterion and the boundaries are the line meshes, as Algorithm 5.6 needs.
+/// Throws MeshingError after kMaxRounds rounds. (The re-split line meshes of the later rounds
+/// are timed with the meshing.)
+template <class FT>
+std::vector<TriangleMeshOutput>
+refine_line_meshes_for_angle(const core::BoundaryPatchPartition<FT, 2>& bpp, const FT& h2,
+                             const GenerationOptions& o,
+                             std::vector<TemplateBoundary<FT>>& boundaries) {
+  constexpr int kMaxRounds = 12;
+  const std::size_t nt = boundaries.size();
+  std::vector<std::size_t> offset(nt + 1, 0);
+  for (std::size_t t = 0; t < nt; ++t) offset[t + 1] = offset[t] + boundaries[t].lines.size();
+  mesh::UnionFind classes(offset[nt]);
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    for (auto [f, g] : bpp.letter_action[l])
+      classes.unite(offset[m.from_template()] + f, offset[m.to_template()] + g);
+  }
+  std::vector<std::vector<std::size_t>> parts(nt);
+  for (std::size_t t = 0; t < nt; ++t)
+    for (const auto& line : boundaries[t].lines) parts[t].push_back(line.n);
+  for (int round = 1;; ++round) {
+    std::vector<TriangleMeshOutput> out;
+    std::vector<bool> refine(offset[nt], false);
+    std::size_t split = 0;
+    for (std::size_t t = 0; t < nt; ++t) {
+      out.push_back(mesh_domain_2(boundaries[t].input, {o.size, o.min_angle_deg, true}));
+      for (std::size_t s : out.back().split_segments) {
+        refine[classes.find(offset[t] + boundaries[t].segment_face[s])] = true;
+        ++split;
+      }
+    }
+    if (split == 0) return out;
+    if (round == kMaxRounds)
+      throw MeshingError("--min-angle " + std::to_string(o.min_angle_deg) +
+                         ": the mesher still splits boundary segments after " +
+                         std::to_string(kMaxRounds) + " refinements of the line meshes");
+    std::size_t faces = 0;
+    for (std::size_t t = 0; t < nt; ++t) {
+      for (std::size_t f = 0; f < parts[t].size(); ++f)
+        if (parts[t][f] > 0 && refine[classes.find(offset[t] + f)]) {
+          parts[t][f] *= 2;
+          ++faces;
+        }
+      boundaries[t] = line_meshes<FT>(bpp.subdivisions[t], h2, o.size, &parts[t]);
+    }
+    if (o.progress)
+      o.progress("sao: round " + std::to_string(round) + ": the mesher split " +
+                 std::to_string(split) + " boundary segments; " + std::to_string(faces) +
+                 " faces split twice as finely");
+  }
+}
+
 template <class FT>
 GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o,
-                          Symmetry symmetry = Symmetry::none) {
+                          Symmetry symmetry = Symmetry::none, bool refine_for_angle = false) {
   const bool rotational = symmetry == Symmetry::rotational;
   const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
   if (!(o.size > 0) || !std::isfinite(o.size))
@@ -545,10 +610,17 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.line_meshes = seconds_since(t0);
 
   t0 = Clock::now();
+  std::vector<TriangleMeshOutput> meshed;
+  if (refine_for_angle) {
+    meshed = refine_line_meshes_for_angle(bpp, h2, o, boundaries); // rounds: timed as meshing
+  } else {
+    for (const auto& b : boundaries)
+      meshed.push_back(mesh_domain_2(b.input, {o.size, o.min_angle_deg}));
+  }
   auto& tm = r.templated.templated;
   tm.point_dimension = 2;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
-    const auto out = mesh_domain_2(boundaries[i].input, {o.size, o.min_angle_deg});
+    const auto& out = meshed[i];
     mesh::MeshTemplate t;
     t.mesh.point_dimension = 2;
     for (const auto& p : out.points) t.mesh.add_vertex(p.data());
@@ -717,6 +789,168 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
   return r;
 }
 
+// ----- sao: Section 6.3.2 (spec/generation.md#sao) --------------------------------------------
+
+/// The carrier's boundary as one closed vertex cycle. Throws for a boundary that is not one
+/// simple cycle.
+template <class FT>
+std::vector<core::Point<FT, 2>> boundary_cycle(const core::ElementComplex<FT, 2>& carrier) {
+  const auto bnd = core::mesh_boundary(carrier);
+  std::map<core::VertexId, std::vector<core::VertexId>> next;
+  for (const auto& e : bnd.elements)
+    if (e.dim() == 1) {
+      next[e.v[0]].push_back(e.v[1]);
+      next[e.v[1]].push_back(e.v[0]);
+    }
+  for (const auto& [v, around] : next)
+    if (around.size() != 2)
+      throw std::invalid_argument("--method sao: the slice's boundary is not one simple polygon");
+  std::vector<core::VertexId> order{next.begin()->first};
+  core::VertexId prev = order[0], cur = next.begin()->second[0];
+  while (cur != order[0]) {
+    order.push_back(cur);
+    const auto& around = next[cur];
+    const core::VertexId to = around[0] == prev ? around[1] : around[0];
+    prev = cur;
+    cur = to;
+  }
+  if (order.size() != next.size())
+    throw std::invalid_argument("--method sao: the slice's boundary is not one simple polygon");
+  std::vector<core::Point<FT, 2>> cycle;
+  for (auto v : order) cycle.push_back(bnd.points[v]);
+  return cycle;
+}
+
+/// An exact triangulation of a simple polygon by ear clipping (an ear: a convex corner whose
+/// triangle holds no other polygon vertex, closed).
+template <class FT>
+core::ElementComplex<FT, 2> ear_triangulation(std::vector<core::Point<FT, 2>> polygon) {
+  using core::detail::orientation_sign;
+  FT twice_area = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const auto& a = polygon[k];
+    const auto& b = polygon[(k + 1) % polygon.size()];
+    twice_area += a[0] * b[1] - a[1] * b[0];
+  }
+  if (twice_area < 0) std::reverse(polygon.begin(), polygon.end());
+  core::ElementComplex<FT, 2> c;
+  c.points = polygon;
+  std::vector<core::VertexId> left(polygon.size());
+  for (std::size_t k = 0; k < left.size(); ++k) left[k] = core::VertexId(k);
+  while (left.size() > 3) {
+    bool clipped = false;
+    for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
+      const auto a = left[(k + left.size() - 1) % left.size()], b = left[k],
+                 d = left[(k + 1) % left.size()];
+      const auto &pa = polygon[a], &pb = polygon[b], &pd = polygon[d];
+      if (orientation_sign<FT>(pa, pb, pd) <= 0) continue;
+      const bool empty = std::none_of(left.begin(), left.end(), [&](core::VertexId v) {
+        if (v == a || v == b || v == d) return false;
+        const auto& q = polygon[v];
+        return orientation_sign<FT>(pa, pb, q) >= 0 && orientation_sign<FT>(pb, pd, q) >= 0 &&
+               orientation_sign<FT>(pd, pa, q) >= 0;
+      });
+      if (!empty) continue;
+      c.elements.push_back(core::Simplex{a, b, d});
+      left.erase(left.begin() + std::ptrdiff_t(k));
+      clipped = true;
+    }
+    if (!clipped)
+      throw std::invalid_argument("--method sao: the cut slice is not a simple polygon");
+  }
+  c.elements.push_back(core::Simplex{left[0], left[1], left[2]});
+  for (auto& e : c.elements) {
+    std::array<core::VertexId, 3> v{e.v[0], e.v[1], e.v[2]};
+    std::sort(v.begin(), v.end());
+    e = core::Simplex{v[0], v[1], v[2]};
+  }
+  c = core::face_completion(c);
+  c.normalize();
+  return c;
+}
+
+/// Section 6.3.2 on a rotational slice structure (one template, instances T_k = R^k ∘ T_0): the
+/// slice has the rotation centre c as a vertex, with its two ray edges c-u and c-w, R' mapping
+/// the first onto the ray of the second (R' = T_0^-1 ∘ T_1, the rotation in template
+/// coordinates). The regular n-gon P with vertices R'^k(q), q the midpoint of c and u (so P's
+/// vertices lie on the slice's rays, as the dissertation asks), is cut out: the centre template
+/// P, instanced once by T_0, and the ring slice (the polygon with c replaced by q and R'(q)),
+/// instanced like the slice.
+/// Everything exact; throws std::invalid_argument naming what does not fit.
+template <class FT>
+core::TemplatedStructure<FT, 2> sao_cut(const core::TemplatedStructure<FT, 2>& x, std::size_t n) {
+  using core::detail::orientation_sign;
+  const auto fail = [](const std::string& why) {
+    throw std::invalid_argument("--method sao: " + why);
+  };
+  if (x.templates.size() != 1) fail("cutting needs one slice template");
+  const auto& t0 = x.instances[0][0].transformation;
+  const auto t0_inv = t0.inverse();
+  const auto rt = t0_inv * x.instances[0][1].transformation; // R' = T_0^-1 ∘ T_1
+  // The centre: R'(c) = c, i.e. (I - A) c = b for R' = (A, b); I - A is invertible (R' != I).
+  const auto& a = rt.matrix();
+  const auto& b = rt.translation_part();
+  const FT m00 = FT(1) - a[0][0], m01 = -a[0][1], m10 = -a[1][0], m11 = FT(1) - a[1][1];
+  const FT det = m00 * m11 - m01 * m10;
+  core::Point<FT, 2> c;
+  c[0] = (b[0] * m11 - m01 * b[1]) / det;
+  c[1] = (m00 * b[1] - m10 * b[0]) / det;
+  const auto cycle = boundary_cycle(x.templates[0].mesh);
+  const std::size_t k = std::size_t(std::find(cycle.begin(), cycle.end(), c) - cycle.begin());
+  if (k == cycle.size()) fail("the rotation centre is not a vertex of the slice");
+  // c's neighbours on the cycle: R' maps the ray edge c-u onto the ray of c-w, or the other way.
+  const auto& before = cycle[(k + cycle.size() - 1) % cycle.size()];
+  const auto& after = cycle[(k + 1) % cycle.size()];
+  const auto midpoint = [&](const core::Point<FT, 2>& p) {
+    core::Point<FT, 2> m;
+    for (int d = 0; d < 2; ++d) m[d] = (c[d] + p[d]) / FT(2);
+    return m;
+  };
+  bool forward = true; // q on c-after, R'(q) on c-before
+  auto q = midpoint(after);
+  auto rq = rt(q);
+  if (!core::point_on_segment<FT, 2>(c, before, rq)) {
+    forward = false;
+    q = midpoint(before);
+    rq = rt(q);
+    if (!core::point_on_segment<FT, 2>(c, after, rq))
+      fail("the rotation does not map the midpoint of one ray edge of the slice onto the other");
+  }
+  // The cut triangle (c, q, R'(q)) must hold no other part of the slice's boundary.
+  for (std::size_t j = 0; j < cycle.size(); ++j) {
+    const auto& e0 = cycle[j];
+    const auto& e1 = cycle[(j + 1) % cycle.size()];
+    if (e0 == c || e1 == c) continue;
+    const auto inside = [&](const core::Point<FT, 2>& p) {
+      return orientation_sign<FT>(c, q, p) >= 0 && orientation_sign<FT>(q, rq, p) >= 0 &&
+             orientation_sign<FT>(rq, c, p) >= 0;
+    };
+    const bool crosses = orientation_sign<FT>(q, rq, e0) * orientation_sign<FT>(q, rq, e1) <= 0 &&
+                         orientation_sign<FT>(e0, e1, q) * orientation_sign<FT>(e0, e1, rq) <= 0;
+    if (inside(e0) || inside(e1) || crosses)
+      fail("the centre polygon would cut the slice's boundary (edge " + std::to_string(j + 1) +
+           ")");
+  }
+  std::vector<core::Point<FT, 2>> ring;
+  for (std::size_t j = 0; j < cycle.size(); ++j) {
+    if (j == k) {
+      ring.push_back(forward ? rq : q);
+      ring.push_back(forward ? q : rq);
+    } else {
+      ring.push_back(cycle[j]);
+    }
+  }
+  std::vector<core::Point<FT, 2>> centre;
+  for (std::size_t j = 0; j < n; ++j) centre.push_back(t0_inv(x.instances[0][j].transformation(q)));
+  core::TemplatedStructure<FT, 2> out;
+  out.templates.push_back({"centre", core::TemplateKind::geometry, ear_triangulation(centre)});
+  out.instances.push_back({x.instances[0][0]});
+  out.templates.push_back(
+      {x.templates[0].name + " ring", core::TemplateKind::geometry, ear_triangulation(ring)});
+  out.instances.push_back(x.instances[0]);
+  return out;
+}
+
 core::TemplatedStructure<LazyCyclotomic, 2>
 lazily(const core::TemplatedStructure<number::Cyclotomic, 2>& x) {
   return core::convert_numbers<LazyCyclotomic>(
@@ -752,6 +986,14 @@ GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method me
     r = generate_gmsh(x, options);
     r.method = "gmsh";
     break;
+  case Method::sao: {
+    // A rotational slice is cut (Section 6.3.2); other structures (e.g. ngon-sao-n) are taken
+    // as cut already. Either way the line meshes are refined until the angle holds.
+    const std::size_t n = x.instances.size() == 1 ? rotation_order(x, unused) : 0;
+    r = generate(n > 0 ? sao_cut(x, n) : x, options, Symmetry::none, true);
+    r.method = "sao";
+    break;
+  }
   case Method::automatic:
   case Method::bpp:
     r = generate(x, options);

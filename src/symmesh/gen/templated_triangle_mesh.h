@@ -63,9 +63,14 @@ struct GenerationResult {
 ///  conventional the baseline of Section 7.1: per region, AT of that region's instances as one
 ///               template with one instance, through the same line meshing and mesher with the
 ///               same parameters (region boundaries stay mesh edges);
+///  sao          Section 6.3.2: a rotational slice structure (one template) is cut into a centre
+///               n-gon, instanced once, and the ring slice, instanced by the rotations (other
+///               structures are taken as cut already); then Algorithm 5.6 with line meshes
+///               refined until the full Delaunay refinement splits no boundary segment, so that
+///               every triangle meets --min-angle (spec/generation.md#sao);
 ///  gmsh         the peer: the whole geometry, per region, meshed by Gmsh's 2D Delaunay at the
 ///               same size (Gmsh has no smallest-angle parameter).
-enum class Method { automatic, bpp, rotational, reflective, combined, conventional, gmsh };
+enum class Method { automatic, bpp, rotational, reflective, combined, conventional, gmsh, sao };
 
 /// \pre x is a templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
 /// std::invalid_argument for other input (and for `rotational` on a structure that is not

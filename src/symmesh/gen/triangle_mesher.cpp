@@ -5,6 +5,7 @@
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -88,11 +89,22 @@ TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingPar
   if (cdt.dimension() < 2) throw MeshingError("the boundary encloses no area");
   mark_by_nesting_parity(cdt);
   const double b = std::pow(std::sin(p.min_angle_deg * M_PI / 180.0), 2);
-  CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
-  mesher.init(true);
-  mesher.refine_mesh();
-
   TriangleMeshOutput out;
+  if (p.report_boundary_splits) {
+    CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
+    mesher.init(true);
+    mesher.refine_mesh();
+    // A split segment is no longer an edge between its two input vertices (combinatorial).
+    for (std::size_t k = 0; k < boundary.segments.size(); ++k) {
+      const auto& s = boundary.segments[k];
+      if (!cdt.is_edge(vh[s[0]], vh[s[1]])) out.split_segments.push_back(k);
+    }
+    if (!out.split_segments.empty()) return out;
+  } else {
+    CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
+    mesher.init(true);
+    mesher.refine_mesh();
+  }
   out.points = boundary.points;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     if (v->info().i != kNoIndex) continue;

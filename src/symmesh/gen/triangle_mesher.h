@@ -2,10 +2,11 @@
 ///
 /// CGAL's Delaunay refinement (Mesh_2) in the mode that never alters the boundary
 /// (Delaunay_mesher_no_edge_refinement_2): the caller gives the boundary already split into short
-/// segments (the line meshes); the mesher inserts interior vertices only. The domain is the set
-/// of points enclosed an odd number of times by the boundary segments (nesting parity), so holes
-/// need no seeds. The output keeps the input vertices first, in input order, which is what lets
-/// the generator name boundary vertices combinatorially.
+/// segments (the line meshes); the mesher inserts interior vertices only. On request the full
+/// mesher (Delaunay_mesher_2) runs instead and reports the segments it had to split. The domain is
+/// the set of points enclosed an odd number of times by the boundary segments (nesting parity), so
+/// holes need no seeds. The output keeps the input vertices first, in input order, which is what
+/// lets the generator name boundary vertices combinatorially.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -18,6 +19,11 @@ namespace symmesh::gen {
 struct MeshingParameters {
   double size = 0;          ///< target edge length (Delaunay_mesh_size_criteria_2 size bound)
   double min_angle_deg = 0; ///< shape bound B = sin²(angle); 0 = no shape criterion
+  /// Run Delaunay_mesher_2, which may split boundary segments, and report which it split
+  /// (TriangleMeshOutput::split_segments) instead of failing: the generator then refines the
+  /// line meshes and meshes again (spec/generation.md#sao). The output is a valid mesh of the
+  /// given boundary only when no segment was split.
+  bool report_boundary_splits = false;
 };
 
 struct BoundaryInput {
@@ -28,6 +34,8 @@ struct BoundaryInput {
 struct TriangleMeshOutput {
   std::vector<std::array<double, 2>> points; ///< input points first, in input order
   std::vector<std::array<std::size_t, 3>> triangles;
+  /// With report_boundary_splits: the input segments the mesher split (indices, increasing).
+  std::vector<std::size_t> split_segments;
 };
 
 /// Raised when the mesher cannot respect the boundary (crossing segments, a Steiner point on the
