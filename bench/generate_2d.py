@@ -243,8 +243,9 @@ WHY_BPP = ("the boundary patch partition composes a template boundary mapping fo
            "mappings in exact K_n arithmetic (about 0.5 s at n = 128, whatever the cell count)")
 WHY_CERT = ("rotational at n = 128: the exact steps around the mesher cost a few milliseconds "
             "whatever the cell count (the rotation check and the BPP of two copies in K_128, about "
-            "4 ms; the SVB, about 2.5 ms, mostly first-touch page faults of its union-find on this "
-            "VM; the certificate's exact comparisons of face ends, about 2 ms), while meshing one "
+            "4 ms; the SVB, 0.2 to 2.5 ms between runs, a combinatorial step whose time on this VM "
+            "varies with memory allocation; the certificate's exact comparisons of face ends, "
+            "about 2 ms), while meshing one "
             "slice of the 10^6-triangle 128-gon takes about 12 ms")
 WHY_BRIDGE = ("the bridge's BPP runs over all 48 instances in K_12 (its 60/120 degree rotations): "
               "template boundary mappings of every touching pair, closing the subdivision under "
