@@ -16,7 +16,6 @@
 #include "symmesh/core/interface_conformity.h"
 
 #include <algorithm>
-#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -83,29 +82,23 @@ struct LineMeshStructure {
   std::vector<std::vector<InstanceSpec<FT, 2>>> instances;
 };
 
-/// The same structure with every template's line mesh written out as a complex (points merged
-/// exactly), for the direct check and the tests.
+/// The same structure with every template's line mesh written out as a complex (the faces'
+/// line meshes merged by exact point equality, as AT merges instances), for the direct check
+/// and the tests.
 template <class FT>
 TemplatedStructure<FT, 2> materialize(const LineMeshStructure<FT>& x) {
   TemplatedStructure<FT, 2> out;
   out.instances = x.instances;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     const auto& t = x.templates[i];
-    Template<FT, 2> m{"line mesh " + std::to_string(i + 1), TemplateKind::mesh, {}};
-    std::map<Point<FT, 2>, VertexId, PointLess<FT, 2>> id;
-    const auto vertex = [&](const Point<FT, 2>& p) {
-      auto [it, inserted] = id.emplace(p, VertexId(m.mesh.points.size()));
-      if (inserted) m.mesh.points.push_back(p);
-      return it->second;
-    };
+    TemplatedStructure<FT, 2> faces;
     for (const auto& f : t.faces) {
-      const auto c = face_line_mesh<FT>(t.points[f.a], t.points[f.b], f.parts);
-      for (const auto& e : c.elements) {
-        std::array<VertexId, 2> v{};
-        for (int k = 0; k < e.n; ++k) v[std::size_t(k)] = vertex(c.points[e.v[k]]);
-        m.mesh.elements.push_back(Simplex::from_range(v.data(), v.data() + e.n));
-      }
+      faces.templates.push_back(
+          {"face", TemplateKind::mesh, face_line_mesh<FT>(t.points[f.a], t.points[f.b], f.parts)});
+      faces.instances.push_back({InstanceSpec<FT, 2>{}});
     }
+    Template<FT, 2> m{"line mesh " + std::to_string(i + 1), TemplateKind::mesh, {}};
+    if (!faces.templates.empty()) m.mesh = apply_template(faces).at.mesh;
     m.mesh.normalize();
     out.templates.push_back(std::move(m));
   }
@@ -154,39 +147,17 @@ std::optional<bool> faces_decide(const SweptFace<FT>& p, const SweptFace<FT>& q)
   return std::nullopt;
 }
 
-/// Condition (i) between the line meshes of two transformed faces, element by element (points
-/// identified by exact equality, as in AT): some two different elements have meeting relative
-/// interiors.
+/// Condition (i) between the line meshes of two transformed faces, element by element: the two
+/// line meshes as a structure of two instances, through apply_template (exact point
+/// identification) and the condition (i) sweep.
 template <class FT>
 bool line_meshes_conflict(const SweptFace<FT>& p, const SweptFace<FT>& q) {
-  const auto mp = face_line_mesh<FT>(p.a, p.b, p.parts);
-  const auto mq = face_line_mesh<FT>(q.a, q.b, q.parts);
-  ElementComplex<FT, 2> both;
-  std::map<Point<FT, 2>, VertexId, PointLess<FT, 2>> id;
-  const auto global = [&](const ElementComplex<FT, 2>& m) {
-    std::vector<Simplex> out;
-    for (const auto& e : m.elements) {
-      std::array<VertexId, 2> v{};
-      for (int k = 0; k < e.n; ++k) {
-        auto [it, inserted] = id.emplace(m.points[e.v[k]], VertexId(both.points.size()));
-        if (inserted) both.points.push_back(m.points[e.v[k]]);
-        v[std::size_t(k)] = it->second;
-      }
-      out.push_back(Simplex::from_range(v.data(), v.data() + e.n));
-    }
-    return out;
-  };
-  const auto ep = global(mp), eq = global(mq);
-  for (const auto& e : ep) {
-    const auto be = EnclosingBox<FT, 2>::of(both.points, e);
-    for (const auto& f : eq) {
-      if (e == f || !be.may_meet(EnclosingBox<FT, 2>::of(both.points, f))) continue;
-      const auto shared = shared_vertices_decide<FT, 2>(both, e, f);
-      if (shared ? *shared : relative_interiors_meet<FT, 2>(both.coords(e), both.coords(f)))
-        return true;
-    }
+  TemplatedStructure<FT, 2> two;
+  for (const auto* f : {&p, &q}) {
+    two.templates.push_back({"face", TemplateKind::mesh, face_line_mesh<FT>(f->a, f->b, f->parts)});
+    two.instances.push_back({InstanceSpec<FT, 2>{}});
   }
-  return false;
+  return !condition_i_failures(apply_template(two)).empty();
 }
 
 } // namespace detail
