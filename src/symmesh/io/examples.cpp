@@ -81,6 +81,47 @@ J ngon_sao(int n) {
                 geometry("ring_slice", ring, inst)}));
 }
 
+J ngon_whole(int n) {
+  J poly = J::array();
+  for (int k = 0; k < n; ++k) poly.push_back(point(cos_of(k, n), sin_of(k, n)));
+  return document("Regular " + std::to_string(n) + "-gon of circumradius 1 (vertices at 2pi*k/" +
+                      std::to_string(n) +
+                      ") as one template with one instance: the whole object, for `symmesh cut "
+                      "--rotation " +
+                      std::to_string(n) + "`.",
+                  J::array({geometry("ngon", poly, J::array({instance(identity())}))}));
+}
+
+// ------------------------------------------------------------------------------ gear
+
+/// A 12-tooth gear as one whole polygon with a bore, angles in steps of 2pi/96 (3.75 degrees):
+/// tooth k has tip corners at steps 8k+1 and 8k+3 (radius 1) and root corners at 8k+5 and
+/// 8k+7 (radius 4/5), i.e. a flank from step -1 to step 1; the bore is a 12-gon of radius 3/10
+/// with corners at steps 8k+6. The x-axis crosses that flank at about 30 degrees: the cut that
+/// Algorithm 6.3 avoids (it cuts through the middle of a tooth, at 90 degrees).
+J gear() {
+  const auto at = [](const std::string& r, int step) {
+    return point(r + "*" + cos_of(step, 96), r + "*" + sin_of(step, 96));
+  };
+  J outline = J::array(), bore = J::array();
+  for (int k = 0; k < 12; ++k) {
+    outline.push_back(at("1", 8 * k + 1));
+    outline.push_back(at("1", 8 * k + 3));
+    outline.push_back(at("4/5", 8 * k + 5));
+    outline.push_back(at("4/5", 8 * k + 7));
+    bore.push_back(at("3/10", 8 * k + 6));
+  }
+  const J g{{"name", "gear"},
+            {"kind", "geometry"},
+            {"polygon", outline},
+            {"holes", J::array({bore})},
+            {"instances", J::array({instance(identity())})}};
+  return document("A 12-tooth gear with a 12-gon bore as one template with one instance (the "
+                  "whole object, rotational symmetry of order 12, exact in K_96), for `symmesh "
+                  "cut --rotation 12`.",
+                  J::array({g}));
+}
+
 // ------------------------------------------------------------------------------ star
 
 /// Inner vertex of the {5/2} star at angle 2pi*j/10 (j odd), radius cos(2pi/5)/cos(2pi/10).
@@ -212,6 +253,11 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
                    {"regular " + std::to_string(n) + "-gon, centre + ring slice (Section 6.3.2)",
                     [n] { return ngon_sao(n); }}});
     }
+    for (int n : {8, 32, 128})
+      v.push_back({"ngon-" + std::to_string(n),
+                   {"regular " + std::to_string(n) + "-gon, whole (for cut --rotation)",
+                    [n] { return ngon_whole(n); }}});
+    v.push_back({"gear", {"12-tooth gear with a bore, whole (for cut --rotation 12)", gear}});
     v.push_back({"mosfet", {"MOSFET-like device, 4 regions, one mirror axis", mosfet}});
     v.push_back({"aircraft", {"aircraft-like outline, one mirror axis, sharp angles", aircraft}});
     v.push_back({"bridge", {"Warren truss: 31 beams, 17 connectors, 60/120/180 degrees", bridge}});

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# symmesh cut (spec/generation.md#cut): a whole symmetric object is cut into the piece of
+# Algorithm 6.2 (first ray by Algorithm 6.3), 6.1, 6.4 or 6.5; the piece is read back, meshed by
+# the matching symmetric method, and the structure instance is conforming, has the whole
+# object's area (computed from the whole object's JSON) and maps onto itself under the symmetry.
+# Bad symmetries and options exit 2 with one line and no file; the output is deterministic.
+source "$(dirname "$0")/common.sh" "$@"
+PY=/usr/bin/python3
+
+# cut_and_mesh NAME WHOLE METHOD SIZE SYMMETRY(n k for symmetry_check.py) -- cut options...
+cut_and_mesh() {
+  local name=$1 whole=$2 method=$3 size=$4 n=$5 k=$6; shift 7
+  if ! "$BIN" cut "$TMP/$whole.json" "$@" -o "$TMP/$name.json" --report "$TMP/$name.cut.json" \
+      2> "$TMP/err"; then fail "$name: cut failed"; sed 's/^/  | /' "$TMP/err"; return; fi
+  pass "$name: $(tail -1 "$TMP/err")"
+  "$BIN" check "$TMP/$name.json" > "$TMP/check" 2>&1 && grep -q "templated geometry (Def 4.4): yes" "$TMP/check" \
+    && pass "$name: the piece is a templated geometry" || fail "$name: check of the piece"
+  if ! "$BIN" generate "$TMP/$name.json" --size "$size" --min-angle 25 --method "$method" \
+      -o "$TMP/$name.vtu" --report "$TMP/$name.r.json" --quiet 2> "$TMP/err"; then
+    fail "$name: generate --method $method failed"; sed 's/^/  | /' "$TMP/err"; return; fi
+  local area
+  area=$($PY tests/cli/geometry_area.py "$TMP/$whole.json")
+  if msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.vtu" "$TMP/$name.r.json" "$area" 2>&1); then
+    pass "$name (--method $method): $(echo "$msg" | tail -1)"; else fail "$name: $msg"; fi
+  if msg=$($PY tests/cli/symmetry_check.py "$TMP/$name.vtu" "$n" "$k" 2>&1); then
+    pass "$name: symmetric under ($n, $k)"; else fail "$name: $msg"; fi
+}
+
+for e in ngon-8 gear star mosfet aircraft; do "$BIN" example "$e" -o "$TMP/$e.json"; done
+
+cut_and_mesh octagon ngon-8 rotational 0.05 8 1 -- --rotation 8
+cut_and_mesh gear_slice gear rotational 0.04 12 1 -- --rotation 12
+cut_and_mesh star_slice star rotational 0.05 5 1 -- --rotation 5
+cut_and_mesh star_half_slice star combined 0.05 5 1 -- --rotation 5 --mirror 0,1
+cut_and_mesh mosfet_half mosfet reflective 0.1 0 0 -- --mirror 1,0
+cut_and_mesh aircraft_half aircraft reflective 0.2 0 0 -- --mirror 1,0
+
+# Algorithm 6.3 on the gear: the first ray runs through the middle of a tooth (90°), where the
+# x-axis would cross a flank at about 30°.
+if $PY - "$TMP/gear_slice.cut.json" <<'EOF'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert abs(r["start_angle_deg"] - 7.5) < 1e-9, r
+assert abs(r["smallest_new_angle_deg"] - 90) < 1e-9, r
+assert 30 < r["smallest_new_angle_at_x_axis_deg"] < 31, r
+EOF
+then pass "gear: Algorithm 6.3 starts at 7.5 deg (90 deg, x-axis about 30 deg)"; else fail "gear: Algorithm 6.3 report"; fi
+
+# Two orthogonal mirrors (Algorithm 6.4) on the octagon, whose mirrors include both axes.
+cut_and_mesh octagon_quadrant ngon-8 reflective 0.05 0 0 -- --mirror 1,0 --mirror 0,1
+
+# Deterministic: the same cut twice is byte-identical.
+"$BIN" cut "$TMP/gear.json" --rotation 12 -o "$TMP/gear_again.json" --quiet
+"$BIN" cut "$TMP/gear.json" --rotation 12 -o "$TMP/gear_third.json" --quiet
+cmp -s "$TMP/gear_again.json" "$TMP/gear_third.json" && pass "cut output is deterministic" \
+  || fail "two cuts of the gear differ"
+
+# Bad input: exit 2, one line naming the problem, no file.
+bad() {
+  local what=$1 pattern=$2; shift 2
+  rm -f "$TMP/bad.json"
+  expect_exit 2 "$what" -- "$BIN" cut "$@" -o "$TMP/bad.json"
+  [ "$(wc -l < "$TMP/stderr")" -eq 1 ] && grep -q -- "$pattern" "$TMP/stderr" \
+    && pass "$what: message names it" || fail "$what: message: $(cat "$TMP/stderr")"
+  [ ! -e "$TMP/bad.json" ] && pass "$what: no file written" || fail "$what: a file was written"
+}
+bad "star has no order-4 rotation" "maps the boundary segment" "$TMP/star.json" --rotation 4
+bad "aircraft has no mirror y = 0" "region 1" "$TMP/aircraft.json" --mirror 0,1
+bad "mirrors not orthogonal" "not orthogonal" "$TMP/ngon-8.json" --mirror 1,0 --mirror 1,1
+bad "rotation order 1" "at least 2" "$TMP/ngon-8.json" --rotation 1
+bad "no symmetry given" "rotation order or a mirror" "$TMP/ngon-8.json"
+bad "malformed mirror" "--mirror" "$TMP/ngon-8.json" --mirror 1
+bad "NaN in a mirror" "--mirror" "$TMP/ngon-8.json" --mirror nan,1
+bad "unknown option" "--frobnicate" "$TMP/ngon-8.json" --rotation 8 --frobnicate
+bad "start with a mirror" "--start" "$TMP/star.json" --rotation 5 --mirror 0,1 --start 1,0
+echo '{"symmesh": "templated-structure/1", "dimension": 2, "templates": [' > "$TMP/broken.json"
+bad "malformed JSON" "broken.json" "$TMP/broken.json" --rotation 4
+finish
