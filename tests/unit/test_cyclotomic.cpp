@@ -351,3 +351,25 @@ TEST(CyclotomicField, WrongMinimalPolynomialIsCaught) {
   EXPECT_NE(pythagoras_violation(square, 16), "");
   EXPECT_FALSE(wrong16->same_field(*CyclotomicField::get(16)));
 }
+
+// is_cos_2pi / is_sin_2pi decide x == ±cos, ±sin on the coefficients (the rotational generator's
+// rotation check): they agree with == on the built elements, for every k, and refuse neighbours,
+// the other sign and elements of another field.
+TEST(CyclotomicField, IsCosSinAgreeWithTheBuiltElements) {
+  const auto f = CyclotomicField::get(128);
+  const auto other = CyclotomicField::get(64);
+  for (long k = 0; k < 128; ++k) {
+    const Cyclotomic c = f->cos_2pi(k, 128), s = f->sin_2pi(k, 128);
+    EXPECT_TRUE(f->is_cos_2pi(c, k, 128)) << k;
+    EXPECT_TRUE(f->is_sin_2pi(s, k, 128)) << k;
+    EXPECT_TRUE(f->is_sin_2pi(-s, k, 128, -1)) << k;
+    EXPECT_EQ(f->is_cos_2pi(c, k + 1, 128), c == f->cos_2pi(k + 1, 128)) << k;
+    EXPECT_EQ(f->is_sin_2pi(s, k, 128, -1), s.is_zero()) << k;
+    EXPECT_EQ(f->is_cos_2pi(s, k, 128), s == c) << k;
+  }
+  // Rational-mode values (the identity's 1 and 0) and the same value in a subfield's K_64.
+  EXPECT_TRUE(f->is_cos_2pi(Cyclotomic(1), 0, 128));
+  EXPECT_TRUE(f->is_sin_2pi(Cyclotomic(0), 0, 128));
+  EXPECT_FALSE(f->is_cos_2pi(Cyclotomic(0), 0, 128));
+  EXPECT_FALSE(f->is_cos_2pi(other->cos_2pi(1, 64), 2, 128)); // another field: not compared
+}

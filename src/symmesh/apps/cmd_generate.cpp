@@ -137,6 +137,12 @@ int run_generate(const GenerateOptions& o) {
                             {"template_meshing", r.timings.template_meshing},
                             {"svb", r.timings.svb},
                             {"lemma_4_2_certificate", r.timings.certificate}};
+  const auto& f = r.timings.page_faults;
+  j["page_faults_breakdown"] = {{"boundary_patch_partition", f.boundary_patch_partition},
+                                {"line_meshes", f.line_meshes},
+                                {"template_meshing", f.template_meshing},
+                                {"svb", f.svb},
+                                {"lemma_4_2_certificate", f.certificate}};
   j["seconds_write"] = write_seconds;
   j["peak_rss_bytes"] = peak_rss_bytes();
   const auto q = mesh::triangle_quality(si.mesh.mesh, o.min_angle);

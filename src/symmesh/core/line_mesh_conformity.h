@@ -164,9 +164,9 @@ bool line_meshes_conflict(const SweptFace<FT>& p, const SweptFace<FT>& q) {
 
 /// Lemma 4.2 (condition (i); (ii) is vacuous on boundary complexes, spec/lemmas.md#lemma-4-2-
 /// boundary) for AT of uniform line meshes, face pair by face pair
-/// (spec/lemmas.md#lemma-4-2-line-meshes). `rotation_copies` = n > 0: only the pairs with a copy 0
-/// are decided, as in check_interface_conformity_up_to_rotation (spec/lemmas.md#lemma-4-2-
-/// rotational). The verdict equals the direct check of AT(materialize(x)).
+/// (spec/lemmas.md#lemma-4-2-line-meshes). `rotation_copies` = n > 0: only the pairs of a copy 0
+/// and a copy k <= n/2 are decided (spec/lemmas.md#lemma-4-2-rotational). The verdict equals the
+/// direct check of AT(materialize(x)).
 /// \pre every template is valid and its own line mesh is conforming (its faces meet only in
 /// common ends); with rotation_copies = n > 0, every template has the n instances
 /// T_{i,k} = R^k ∘ T_{i,0} for one rotation R of order n (checked by the caller)
@@ -178,6 +178,14 @@ Lemma42Verdict check_line_mesh_conformity(const LineMeshStructure<FT>& x,
   for (std::size_t i = 0; i < x.instances.size(); ++i)
     for (std::size_t g = 0; g < x.instances[i].size(); ++g) ids.push_back({i, g});
   const auto copy0 = [&](std::size_t a) { return rotation_copies == 0 || ids[a].g == 0; };
+  // Up to the rotation, a pair is decided when one side is a copy 0 and the other a copy
+  // k <= n/2: R^{-k} turns ((i,0), (j,k)) into ((j,0), (i,n-k)) (lemma-4-2-rotational).
+  const auto near_half = [&](std::size_t a) {
+    return rotation_copies == 0 || 2 * ids[a].g <= rotation_copies;
+  };
+  const auto decided = [&](std::size_t a, std::size_t b) {
+    return rotation_copies == 0 || (copy0(a) && near_half(b)) || (copy0(b) && near_half(a));
+  };
   // Transformed face ends per instance, and the copies 0 boxes that the other copies must meet.
   std::vector<std::vector<Point<FT, 2>>> moved(ids.size());
   std::vector<IBox> copy0_boxes;
@@ -196,8 +204,9 @@ Lemma42Verdict check_line_mesh_conformity(const LineMeshStructure<FT>& x,
     for (const auto& f : x.templates[ids[a].i].faces) {
       const std::array<VertexId, 2> ends{f.a, f.b};
       const auto box = IBox::of(moved[a], ends);
-      if (!copy0(a) && std::none_of(copy0_boxes.begin(), copy0_boxes.end(),
-                                    [&](const IBox& c) { return box.may_meet(c); }))
+      if (!copy0(a) &&
+          (!near_half(a) || std::none_of(copy0_boxes.begin(), copy0_boxes.end(),
+                                         [&](const IBox& c) { return box.may_meet(c); })))
         continue;
       items.push_back({a, moved[a][f.a], moved[a][f.b], f.parts, box});
     }
@@ -209,8 +218,7 @@ Lemma42Verdict check_line_mesh_conformity(const LineMeshStructure<FT>& x,
     const auto& p = items[s];
     for (std::size_t r = s + 1; r < items.size() && !(p.box.hi[0] < items[r].box.lo[0]); ++r) {
       const auto& q = items[r];
-      if (p.instance == q.instance || !(copy0(p.instance) || copy0(q.instance)) ||
-          !p.box.may_meet(q.box, 1))
+      if (p.instance == q.instance || !decided(p.instance, q.instance) || !p.box.may_meet(q.box, 1))
         continue;
       pairs.emplace_back(std::minmax(p.instance, q.instance));
       if (!v.holds) continue;

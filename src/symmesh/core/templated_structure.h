@@ -160,8 +160,9 @@ inline std::string overlap_message(const OverlapWitness& o) {
 /// Eq. 4.2: int*(us(T_{i,g}(X_i))) ∩ int*(us(T_{j,h}(X_j))) = ∅ for distinct instances.
 /// For pure D-dimensional meshes this holds iff no two D-cells of different instances have
 /// meeting interiors (spec/definitions.md#eq-4-2-by-cells). `rotation_copies` = n > 0: only the
-/// pairs with a copy 0 are decided — R^-k maps the pair ((i,k), (j,l)) onto ((i,0), (j,l-k)) and
-/// keeps meeting interiors (spec/lemmas.md#lemma-4-2-rotational).
+/// pairs of a copy 0 and a copy k <= n/2 are decided — R^-k maps the pair ((i,k), (j,l)) onto
+/// ((i,0), (j,l-k)) and ((i,0), (j,l)) onto ((j,0), (i,n-l)), and keeps meeting interiors
+/// (spec/lemmas.md#lemma-4-2-rotational).
 /// \pre with rotation_copies = n > 0: every template has the n instances T_{i,k} = R^k ∘ T_{i,0}
 /// for one rotation R of order n (checked by the caller)
 template <class FT, int D>
@@ -176,7 +177,12 @@ std::optional<OverlapWitness> find_instance_overlap(const TemplatedStructure<FT,
   }
   std::optional<OverlapWitness> out;
   for_each_overlapping_pair<FT, D>(boxes, [&](std::size_t a, std::size_t b) {
-    if (rotation_copies > 0 && ids[a].g != 0 && ids[b].g != 0) return true;
+    // Up to the rotation: one side a copy 0, the other a copy k <= n/2 (R^{-k} turns
+    // ((i,0), (j,k)) into ((j,0), (i,n-k)); spec/lemmas.md#lemma-4-2-rotational).
+    if (rotation_copies > 0) {
+      const auto half = [&](std::size_t c) { return 2 * ids[c].g <= rotation_copies; };
+      if (!((ids[a].g == 0 && half(b)) || (ids[b].g == 0 && half(a)))) return true;
+    }
     const auto ca = inst[a].cells();
     const auto cb = inst[b].cells();
     for (const auto& s : ca) {

@@ -16,10 +16,13 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <cstdint>
 #include <sstream>
 #include <tuple>
+
+#include <sys/resource.h>
 
 namespace symmesh::gen {
 namespace {
@@ -28,6 +31,12 @@ using LazyCyclotomic = CGAL::Lazy_exact_nt<number::Cyclotomic>;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+long minor_faults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
 }
 
 template <class FT>
@@ -173,9 +182,11 @@ mesh::Transformation to_double_transformation(const auto& t) {
 }
 
 /// One candidate of the SVB: the instance pair (from, to) and its identified template vertices.
+using SvbPairs = std::vector<std::pair<mesh::IndexType, mesh::IndexType>>;
+/// The copies of one mapping share one pair list (a rotational mapping stands for n pairs).
 struct SvbCandidate {
   core::InstanceId from, to;
-  std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
+  std::shared_ptr<const SvbPairs> pairs;
 };
 
 /// The BPP's mappings between distinct instances, one direction each (the inverse is a mapping
@@ -200,7 +211,7 @@ std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& 
     const auto& m = bpp.mappings[l];
     if (m.whole_boundary) continue;
     if (copies > 0) {
-      const auto pairs = mapping_pairs(bpp, l, boundaries);
+      const auto pairs = std::make_shared<const SvbPairs>(mapping_pairs(bpp, l, boundaries));
       for (std::size_t k = 0; k < copies; ++k) {
         const core::InstanceId from{m.from.i, k}, to{m.to.i, k};
         if (global(from) < global(to)) out.push_back({from, to, pairs});
@@ -209,10 +220,11 @@ std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& 
     }
     if (rotations == 0) {
       if (global(m.from) < global(m.to))
-        out.push_back({m.from, m.to, mapping_pairs(bpp, l, boundaries)});
+        out.push_back(
+            {m.from, m.to, std::make_shared<const SvbPairs>(mapping_pairs(bpp, l, boundaries))});
       continue;
     }
-    const auto pairs = mapping_pairs(bpp, l, boundaries);
+    const auto pairs = std::make_shared<const SvbPairs>(mapping_pairs(bpp, l, boundaries));
     const std::size_t n = rotations, shift = (m.to.g + n - m.from.g) % n;
     for (std::size_t k = 0; k < n; ++k) {
       const core::InstanceId from{m.from.i, k}, to{m.to.i, (k + shift) % n};
@@ -244,17 +256,18 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
     return vertex_offset[id.i] + id.g * boundaries[id.i].input.points.size();
   };
   // Interfaces with many identified vertices first, so point contacts implied by them drop out.
-  std::stable_sort(
-      candidates.begin(), candidates.end(),
-      [](const SvbCandidate& a, const SvbCandidate& b) { return a.pairs.size() > b.pairs.size(); });
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const SvbCandidate& a, const SvbCandidate& b) {
+                     return a.pairs->size() > b.pairs->size();
+                   });
   mesh::UnionFind uf(vertices);
-  std::map<std::tuple<std::size_t, std::size_t,
-                      std::vector<std::pair<mesh::IndexType, mesh::IndexType>>>,
-           std::size_t>
-      table_of;
+  // Tables are deduplicated by content; the copies of one mapping share their list, so the
+  // content is compared once per list, not once per instance pair.
+  std::map<std::tuple<std::size_t, std::size_t, SvbPairs>, std::size_t> table_of;
+  std::map<std::tuple<std::size_t, std::size_t, const SvbPairs*>, std::size_t> table_of_list;
   for (const auto& c : candidates) {
     bool adds = false;
-    for (auto [a, b] : c.pairs) {
+    for (auto [a, b] : *c.pairs) {
       if (std::size_t(a) >= boundaries[c.from.i].input.points.size() ||
           std::size_t(b) >= boundaries[c.to.i].input.points.size())
         throw std::logic_error("SVB: an identified vertex is not a boundary vertex");
@@ -262,13 +275,18 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
              adds;
     }
     if (!adds) continue;
-    auto key = std::make_tuple(c.from.i, c.to.i, c.pairs);
-    auto [it, inserted] = table_of.emplace(std::move(key), out.tables.size());
-    if (inserted)
-      out.tables.push_back({mesh::IndexType(c.from.i), mesh::IndexType(c.to.i), c.pairs});
+    auto [by_list, fresh] =
+        table_of_list.emplace(std::make_tuple(c.from.i, c.to.i, c.pairs.get()), 0);
+    if (fresh) {
+      auto [it, inserted] =
+          table_of.emplace(std::make_tuple(c.from.i, c.to.i, *c.pairs), out.tables.size());
+      if (inserted)
+        out.tables.push_back({mesh::IndexType(c.from.i), mesh::IndexType(c.to.i), *c.pairs});
+      by_list->second = it->second;
+    }
     out.identifications.push_back({mesh::IndexType(global_instance(c.from)),
                                    mesh::IndexType(global_instance(c.to)),
-                                   mesh::IndexType(it->second)});
+                                   mesh::IndexType(by_list->second)});
   }
 }
 
@@ -295,11 +313,13 @@ bool rotations_about_origin(const core::TemplatedStructure<FT, 2>& x, std::size_
     for (const auto& list : x.instances)
       for (std::size_t k = 0; k < n; ++k) {
         const auto& t = list[k].transformation;
-        const auto c = field->cos_2pi(long(k), long(n)), s = field->sin_2pi(long(k), long(n));
         const auto& m = t.matrix();
-        if (!(value(m[0][0]) == c && value(m[1][1]) == c && value(m[1][0]) == s &&
-              value(m[0][1]) == -s && value(t.translation_part()[0]).is_zero() &&
-              value(t.translation_part()[1]).is_zero()))
+        const long kk = long(k), nn = long(n);
+        if (!(field->is_cos_2pi(value(m[0][0]), kk, nn) &&
+              field->is_cos_2pi(value(m[1][1]), kk, nn) &&
+              field->is_sin_2pi(value(m[1][0]), kk, nn) &&
+              field->is_sin_2pi(value(m[0][1]), kk, nn, -1) &&
+              value(t.translation_part()[0]).is_zero() && value(t.translation_part()[1]).is_zero()))
           return false;
       }
     return true;
@@ -416,11 +436,12 @@ void copy_candidates(const core::TemplatedStructure<FT, 2>& x,
     for (std::size_t k = 0; k < list.size(); ++k)
       for (std::size_t l = k + 1; l < list.size(); ++l) {
         const auto m = list[l].transformation.inverse() * list[k].transformation;
-        SvbCandidate c{{i, k}, {i, l}, {}};
+        SvbPairs pairs;
         for (std::size_t v = 0; v < pts.size(); ++v)
           if (const auto it = local.find(m(pts[v])); it != local.end())
-            c.pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(it->second));
-        if (!c.pairs.empty()) out.push_back(std::move(c));
+            pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(it->second));
+        if (!pairs.empty())
+          out.push_back({{i, k}, {i, l}, std::make_shared<const SvbPairs>(std::move(pairs))});
       }
   }
 }
@@ -562,6 +583,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   // Eq. 4.2 be checked up to the rotation too.
   std::size_t rotations = 0;
   double symmetry_seconds = 0;
+  const long faults_before_bpp = minor_faults();
   if (rotational) {
     const auto ts = Clock::now();
     std::string reason;
@@ -571,6 +593,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
                                   reason);
     symmetry_seconds = seconds_since(ts);
   }
+  const long faults_symmetry = minor_faults() - faults_before_bpp;
   if (const auto overlap = core::find_instance_overlap(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
   const auto say = [&](const std::string& s) {
@@ -578,6 +601,8 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   };
   GenerationResult r;
   auto t0 = Clock::now();
+  long f0 = minor_faults();
+  auto& faults = r.timings.page_faults;
   core::TemplatedStructure<FT, 2> two_copies;
   if (rotational) {
     // Algorithm 6.2: the slice's two half-lines are all the BPP needs; the first two rotated
@@ -599,17 +624,21 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   const auto bpp =
       core::boundary_patch_partition(rotational || group ? two_copies : x, bpp_options);
   r.timings.boundary_patch_partition = symmetry_seconds + seconds_since(t0);
+  faults.boundary_patch_partition = faults_symmetry + minor_faults() - f0;
   say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
       std::to_string(bpp.mappings.size()) + " mappings");
 
   t0 = Clock::now();
+  f0 = minor_faults();
   const FT h = exact_from_double<FT>(o.size);
   const FT h2 = h * h;
   std::vector<TemplateBoundary<FT>> boundaries;
   for (const auto& sd : bpp.subdivisions) boundaries.push_back(line_meshes<FT>(sd, h2, o.size));
   r.timings.line_meshes = seconds_since(t0);
+  faults.line_meshes = minor_faults() - f0;
 
   t0 = Clock::now();
+  f0 = minor_faults();
   std::vector<TriangleMeshOutput> meshed;
   if (refine_for_angle) {
     meshed = refine_line_meshes_for_angle(bpp, h2, o, boundaries); // rounds: timed as meshing
@@ -639,16 +668,21 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     tm.templates.push_back(std::move(t));
   }
   r.timings.template_meshing = seconds_since(t0);
+  faults.template_meshing = minor_faults() - f0;
 
   t0 = Clock::now();
+  f0 = minor_faults();
   auto candidates = svb_candidates(x, bpp, boundaries, rotations, copies);
   if (group) copy_candidates(x, boundaries, candidates);
   shared_vertex_bookkeeping(x, boundaries, std::move(candidates), r.templated);
   r.timings.svb = seconds_since(t0);
+  faults.svb = minor_faults() - f0;
 
   t0 = Clock::now();
+  f0 = minor_faults();
   const auto verdict = certify(x, boundaries, tm, rotations);
   r.timings.certificate = seconds_since(t0);
+  faults.certificate = minor_faults() - f0;
   r.lemma_4_2_holds = verdict.holds;
   if (!verdict.holds)
     r.lemma_4_2_failure =
@@ -724,8 +758,10 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
   }
   GenerationResult r;
   const auto t0 = Clock::now();
+  const long f0 = minor_faults();
   const auto g = mesh_with_gmsh(in, o.size);
   r.timings.template_meshing = seconds_since(t0);
+  r.timings.page_faults.template_meshing = minor_faults() - f0;
   auto& tm = r.templated.templated;
   tm.point_dimension = 2;
   std::vector<std::map<std::size_t, mesh::IndexType>> local(in.regions.size());

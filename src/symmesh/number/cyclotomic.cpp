@@ -342,6 +342,40 @@ Cyclotomic CyclotomicField::sin_2pi(long k, long n) const {
   return two_cos_2pi_over_m(j) / Cyclotomic(2);
 }
 
+bool CyclotomicField::is_half_two_cos(const Cyclotomic& x, long j, int sign) const {
+  if (x.field() && !x.field()->same_field(*this)) return false;
+  j %= m_;
+  if (j < 0) j += m_;
+  if (j > m_ / 2) j = m_ - j;
+  const auto& xs = x.coefficients();
+  mpq_class twice; // 2·sign·x_i, compared with the cached 2cos coefficient
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto& tc = two_cos_cached(j);
+  for (std::size_t i = 0; i < tc.size(); ++i) {
+    if (i >= xs.size()) {
+      if (sgn(tc[i]) != 0) return false;
+      continue;
+    }
+    mpq_mul_2exp(twice.get_mpq_t(), xs[i].get_mpq_t(), 1);
+    if (sign < 0) mpq_neg(twice.get_mpq_t(), twice.get_mpq_t());
+    if (!mpq_equal(twice.get_mpq_t(), tc[i].get_mpq_t())) return false;
+  }
+  return true;
+}
+
+bool CyclotomicField::is_cos_2pi(const Cyclotomic& x, long k, long n, int sign) const {
+  if (n <= 0 || m_ % n != 0)
+    throw std::invalid_argument("is_cos_2pi: n must divide m = " + std::to_string(m_));
+  return is_half_two_cos(x, (k % n) * (m_ / n), sign);
+}
+
+bool CyclotomicField::is_sin_2pi(const Cyclotomic& x, long k, long n, int sign) const {
+  if (m_ % 4 != 0) throw std::invalid_argument("is_sin_2pi: m must be a multiple of 4");
+  if (n <= 0 || m_ % n != 0)
+    throw std::invalid_argument("is_sin_2pi: n must divide m = " + std::to_string(m_));
+  return is_half_two_cos(x, (k % n) * (m_ / n) - m_ / 4, sign);
+}
+
 std::vector<mpq_class> CyclotomicField::multiply_small(const std::vector<mpz_class>& an,
                                                        const mpz_class& ad,
                                                        const std::vector<mpz_class>& bn,

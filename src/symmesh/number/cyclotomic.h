@@ -75,6 +75,12 @@ public:
   Cyclotomic cos_2pi(long k, long n) const;
   /// sin(2πk/n) = cos(2π(k m/n − m/4)/m); requires n > 0, n | m and 4 | m.
   Cyclotomic sin_2pi(long k, long n) const;
+  /// x == sign·cos(2πk/n), resp. sign·sin(2πk/n), decided on the coefficients against the
+  /// cached Chebyshev values, without building the element (the rotational generator compares
+  /// every instance matrix with them). Same requirements as cos_2pi / sin_2pi; sign = ±1. An
+  /// element of another field is not compared (false); rationals are.
+  bool is_cos_2pi(const Cyclotomic& x, long k, long n, int sign = 1) const;
+  bool is_sin_2pi(const Cyclotomic& x, long k, long n, int sign = 1) const;
 
   // Coefficient-level operations (vectors of size d), used by Cyclotomic.
   std::vector<mpq_class> multiply(const std::vector<mpq_class>& a,
@@ -105,6 +111,8 @@ private:
   struct Powers;
   std::shared_ptr<const Powers> powers(long precision) const;
   const std::vector<mpq_class>& two_cos_cached(long j) const;
+  /// x == sign·(1/2)·2cos(2πj/m).
+  bool is_half_two_cos(const Cyclotomic& x, long j, int sign) const;
   std::vector<mpq_class> times_c(const std::vector<mpq_class>& v) const;
   /// multiply on machine integers, for numerators below 2^31 and a small reduction table.
   std::vector<mpq_class> multiply_small(const std::vector<mpz_class>& an, const mpz_class& ad,
