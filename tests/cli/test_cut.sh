@@ -46,6 +46,16 @@ assert 30 < r["smallest_new_angle_at_x_axis_deg"] < 31, r
 EOF
 then pass "gear: Algorithm 6.3 starts at 7.5 deg (90 deg, x-axis about 30 deg)"; else fail "gear: Algorithm 6.3 report"; fi
 
+# A given first ray (--start) is kept: the x-axis crosses the gear's flank at about 30.5°.
+"$BIN" cut "$TMP/gear.json" --rotation 12 --start 1,0 -o "$TMP/gear_x.json" --report "$TMP/gear_x.cut.json" --quiet
+if $PY - "$TMP/gear_x.cut.json" <<'EOF'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["start_kind"] == "given" and abs(r["start_angle_deg"]) < 1e-9, r
+assert 30 < r["smallest_new_angle_deg"] < 31, r
+EOF
+then pass "gear --start 1,0: the given ray is kept"; else fail "gear --start 1,0"; fi
+
 # Two orthogonal mirrors (Algorithm 6.4) on the octagon, whose mirrors include both axes.
 cut_and_mesh octagon_quadrant ngon-8 reflective 0.05 0 0 -- --mirror 1,0 --mirror 0,1
 
@@ -68,6 +78,7 @@ bad "star has no order-4 rotation" "maps the boundary segment" "$TMP/star.json" 
 bad "aircraft has no mirror y = 0" "region 1" "$TMP/aircraft.json" --mirror 0,1
 bad "mirrors not orthogonal" "not orthogonal" "$TMP/ngon-8.json" --mirror 1,0 --mirror 1,1
 bad "rotation order 1" "at least 2" "$TMP/ngon-8.json" --rotation 1
+bad "rotation order too large" "at most" "$TMP/ngon-8.json" --rotation 999983
 bad "no symmetry given" "rotation order or a mirror" "$TMP/ngon-8.json"
 bad "malformed mirror" "--mirror" "$TMP/ngon-8.json" --mirror 1
 bad "NaN in a mirror" "--mirror" "$TMP/ngon-8.json" --mirror nan,1

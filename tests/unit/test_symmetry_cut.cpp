@@ -196,6 +196,44 @@ TEST(SymmetryCut, CarriersWithTJunctionsAreOneRegion) {
   expect_areas_add_up(x, r);
 }
 
+TEST(SymmetryCut, HalfTurnAndThirdTurn) {
+  // n = 2: the slice is a half-plane; n = 3 on an equilateral triangle about the origin (K_12).
+  const auto rect = parse(polygon_doc(
+      R"({"kind": "geometry", "polygon": [["-2", "-1"], ["2", "-1"], ["2", "1"], ["-2", "1"]], )" +
+      identity_instance + "}"));
+  const auto r2 = gen::cut_to_fundamental_piece(rect, {2, {}, {}});
+  EXPECT_EQ(r2.group.size(), 2u);
+  ASSERT_EQ(r2.pieces.size(), 1u);
+  expect_areas_add_up(rect, r2);
+  const auto tri = parse(polygon_doc(
+      R"J({"kind": "geometry", "polygon": [["cos(2pi*3/12)", "sin(2pi*3/12)"],
+      ["cos(2pi*7/12)", "sin(2pi*7/12)"], ["cos(2pi*11/12)", "sin(2pi*11/12)"]], )J" +
+      identity_instance + "}"));
+  const auto r3 = gen::cut_to_fundamental_piece(tri, {3, {}, {}});
+  EXPECT_EQ(r3.group.size(), 3u);
+  ASSERT_EQ(r3.pieces.size(), 1u);
+  EXPECT_NEAR(r3.smallest_new_angle_deg, 90, 1e-9); // through the middle of a side
+  expect_areas_add_up(tri, r3);
+}
+
+TEST(SymmetryCut, InputFieldIsEmbeddedIntoTheCutsField) {
+  // The octagon is read in K_8; Algorithm 6.5 with order 8 needs rot(pi/8), i.e. K_16, so every
+  // coordinate is carried over from K_8 into K_16.
+  const auto x = example("ngon-8");
+  const auto r = gen::cut_to_fundamental_piece(x, {8, {pt(0, 1)}, {}});
+  ASSERT_TRUE(r.field != nullptr);
+  EXPECT_EQ(r.field->m(), 16);
+  EXPECT_EQ(r.group.size(), 16u);
+  ASSERT_EQ(r.pieces.size(), 1u);
+  EXPECT_EQ(r.pieces[0].outer.size(), 3u); // centre, vertex, edge midpoint
+  // The object's area is in K_8 and the piece's in K_16 (no mixed arithmetic): compared as
+  // certified intervals, which for these small numbers are a few ulps wide.
+  const auto whole = object_areas(x).at(1).to_interval();
+  const auto cut = (piece_areas(r).at(1) * Cyclotomic(16)).to_interval();
+  EXPECT_NEAR(cut.first, whole.first, 1e-12);
+  EXPECT_NEAR(cut.second, whole.second, 1e-12);
+}
+
 TEST(SymmetryCut, ObjectWithoutTheSymmetryIsRefused) {
   const auto x = example("star");
   try {
@@ -208,6 +246,7 @@ TEST(SymmetryCut, ObjectWithoutTheSymmetryIsRefused) {
   EXPECT_THROW(gen::cut_to_fundamental_piece(x, {1, {}, {}}), gen::CutError);
   EXPECT_THROW(gen::cut_to_fundamental_piece(x, {0, {}, {}}), gen::CutError);
   EXPECT_THROW(gen::cut_to_fundamental_piece(x, {5, {}, pt(0, 0)}), gen::CutError);
+  EXPECT_THROW(gen::cut_to_fundamental_piece(x, {999983, {}, {}}), gen::CutError);
 }
 
 TEST(SymmetryCut, SmallestNewAngleOfOneEdge) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -180,9 +181,16 @@ int run_cut(const CutOptions& o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   try {
     io::write_file_atomically(o.out, text);
+  } catch (const std::runtime_error& e) {
+    print_error(std::string("cut: ") + e.what());
+    return bad_input;
+  }
+  try {
     if (!o.report.empty())
       io::write_file_atomically(o.report, report_json(r, o, seconds).dump(2) + "\n");
   } catch (const std::runtime_error& e) {
+    std::error_code ignored;
+    std::filesystem::remove(o.out, ignored); // no partial output: the piece goes too
     print_error(std::string("cut: ") + e.what());
     return bad_input;
   }

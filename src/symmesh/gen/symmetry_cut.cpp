@@ -18,6 +18,8 @@ using number::CyclotomicFieldPtr;
 using P = CutPoint;
 
 constexpr double kPi = 3.14159265358979323846;
+/// The largest field K_m the cut builds (the templated-structure reader's limit as well).
+constexpr long kMaxFieldOrder = 1024;
 
 // ----- exact arithmetic on points -------------------------------------------------------------
 
@@ -306,7 +308,7 @@ double reduce(double a, double period) {
 /// of the perpendiculars from the origin (where the angle with one edge peaks at 90°), and of
 /// the rays where two edges' angles are equal (where a rising and a falling piece cross); the
 /// objective is piecewise linear between them, so its maximum is at one of them.
-Candidate optimal_start(const std::vector<std::pair<P, P>>& segments, int n) {
+std::vector<Candidate> ranked_starts(const std::vector<std::pair<P, P>>& segments, int n) {
   const double alpha = 2 * kPi / n;
   std::vector<std::array<double, 4>> seg;
   std::vector<std::pair<P, P>> exact;
@@ -337,9 +339,17 @@ Candidate optimal_start(const std::vector<std::pair<P, P>>& segments, int n) {
     const double d = reduce(lo[j] - lo[i], 2 * kPi);
     return d <= width[i] || reduce(lo[i] - lo[j], 2 * kPi) <= width[j];
   };
+  // Balancing rays are looked for in the first sector [0, α] only (the others are its turned
+  // copies), which keeps the pairs to the segments there.
+  const auto in_first_sector = [&](std::size_t i) {
+    return lo[i] <= alpha || lo[i] + width[i] >= 2 * kPi;
+  };
+  std::vector<std::size_t> sector;
   for (std::size_t i = 0; i < seg.size(); ++i)
-    for (std::size_t j = i + 1; j < seg.size(); ++j)
-      if (spans_overlap(i, j)) {
+    if (in_first_sector(i)) sector.push_back(i);
+  for (std::size_t a = 0; a < sector.size(); ++a)
+    for (std::size_t b = a + 1; b < sector.size(); ++b)
+      if (const std::size_t i = sector[a], j = sector[b]; spans_overlap(i, j)) {
         const double mid = (foot_angle[i] + foot_angle[j]) / 2;
         cands.push_back({mid, 2, {}, 0});
         cands.push_back({mid + kPi, 2, {}, 0});
@@ -356,22 +366,23 @@ Candidate optimal_start(const std::vector<std::pair<P, P>>& segments, int n) {
       unique.push_back(c);
     else if (c.rank < unique.back().rank)
       unique.back() = c;
-  Candidate best;
-  best.value = -1;
-  for (auto& c : unique) {
-    c.value = smallest_new_angle_deg(seg, c.sigma);
-    // Ties (within rounding of the double objective) keep the exact kinds, then the smallest σ.
-    const double tie = 1e-9;
-    if (c.value > best.value + tie || (c.value > best.value - tie && c.rank < best.rank)) best = c;
-  }
-  if (best.rank == 2 || best.value < 0) {
-    // A rational direction within 2^-30 of the balancing ray.
-    const double scale_bits = 1073741824.0;
-    best.exact = {Cyclotomic(mpq_class(long(std::lround(std::cos(best.sigma) * scale_bits)))),
-                  Cyclotomic(mpq_class(long(std::lround(std::sin(best.sigma) * scale_bits))))};
-    if (best.value < 0) best = {0, 2, {Cyclotomic(1), Cyclotomic(0)}, 90};
-  }
-  return best;
+  for (auto& c : unique) c.value = smallest_new_angle_deg(seg, c.sigma);
+  // Best first; ties (within rounding of the double objective) keep the exact kinds, then the
+  // smallest σ (the sort is stable and `unique` is ordered by σ).
+  const double tie = 1e-9;
+  std::stable_sort(unique.begin(), unique.end(), [&](const Candidate& u, const Candidate& v) {
+    if (std::abs(u.value - v.value) > tie) return u.value > v.value;
+    return u.rank < v.rank;
+  });
+  if (unique.empty()) unique.push_back({0, 1, {Cyclotomic(1), Cyclotomic(0)}, 90}); // the x-axis
+  for (auto& c : unique)
+    if (c.rank == 2) {
+      // A rational direction within 2^-30 of the balancing ray.
+      const double scale_bits = 1073741824.0;
+      c.exact = {Cyclotomic(mpq_class(long(std::lround(std::cos(c.sigma) * scale_bits)))),
+                 Cyclotomic(mpq_class(long(std::lround(std::sin(c.sigma) * scale_bits))))};
+    }
+  return unique;
 }
 
 // ----- clipping and rings ---------------------------------------------------------------------
@@ -499,7 +510,11 @@ CyclotomicFieldPtr field_for(const core::TemplatedStructure<Cyclotomic, 2>& x,
   if (spec.rotation_order >= 2) order(spec.rotation_order);
   if (spec.rotation_order >= 2 && !spec.mirrors.empty()) order(2L * spec.rotation_order);
   if (m == 1) return nullptr;
-  return CyclotomicField::get(int(std::lcm(m, 4L)));
+  m = std::lcm(m, 4L);
+  if (m > kMaxFieldOrder)
+    throw CutError("the symmetry needs the field K_m with m = " + std::to_string(m) + " > " +
+                   std::to_string(kMaxFieldOrder) + ", the largest supported");
+  return CyclotomicField::get(int(m));
 }
 
 } // namespace
@@ -548,6 +563,8 @@ CutResult cut_to_fundamental_piece(const core::TemplatedStructure<Cyclotomic, 2>
                                    const SymmetrySpec& spec) {
   const int n = spec.rotation_order;
   if (n == 1 || n < 0) throw CutError("--rotation: the order must be at least 2");
+  if (n > kMaxFieldOrder)
+    throw CutError("--rotation: the order must be at most " + std::to_string(kMaxFieldOrder));
   if (spec.mirrors.size() > 2) throw CutError("--mirror: at most two (orthogonal) mirrors");
   if (n == 0 && spec.mirrors.empty()) throw CutError("give a rotation order or a mirror to cut by");
   if (n >= 2 && spec.mirrors.size() > 1)
@@ -585,65 +602,83 @@ CutResult cut_to_fundamental_piece(const core::TemplatedStructure<Cyclotomic, 2>
   r.field = g.field;
   r.rotation_order = n;
   r.mirrors = g.mirrors;
-  // The fundamental cone as half-planes h·x >= 0.
-  std::vector<P> half_planes;
+  // Clips every carrier triangle by the cone {x : h·x >= 0 for every h} and traces the pieces.
+  const auto cut_by = [&](const std::vector<P>& half_planes) {
+    std::vector<CutPiece> out;
+    for (const auto& [region, tris] : whole.triangles) {
+      std::vector<std::vector<P>> clipped;
+      for (const auto& tri : tris) {
+        std::vector<P> piece = tri;
+        for (const auto& h : half_planes) piece = clip(piece, h);
+        if (piece.size() >= 3 && twice_area(piece).sign() > 0) clipped.push_back(std::move(piece));
+      }
+      if (clipped.empty()) continue;
+      auto pieces = trace_pieces(region, clipped, boundary_vertices[region]);
+      out.insert(out.end(), pieces.begin(), pieces.end());
+    }
+    if (out.empty()) throw CutError("the cut leaves nothing of the object");
+    return out;
+  };
+
   if (n >= 2 && g.mirrors.empty()) {
     std::vector<std::array<double, 4>> seg_d;
     for (const auto& [a, b] : all_segments)
       if (!cross(a, b).is_zero())
         seg_d.push_back({a[0].to_double(), a[1].to_double(), b[0].to_double(), b[1].to_double()});
+    std::vector<Candidate> starts;
     if (spec.start) {
-      r.start_direction = {embed((*spec.start)[0], g.field), embed((*spec.start)[1], g.field)};
-      if (r.start_direction[0].is_zero() && r.start_direction[1].is_zero())
+      starts.push_back(
+          {0, -1, {embed((*spec.start)[0], g.field), embed((*spec.start)[1], g.field)}, 0});
+      if (starts[0].exact[0].is_zero() && starts[0].exact[1].is_zero())
         throw CutError("--start: the direction is the zero vector");
-      r.start_kind = "given";
     } else {
-      const Candidate c = optimal_start(all_segments, n);
-      r.start_direction = {embed(c.exact[0], g.field), embed(c.exact[1], g.field)};
-      r.start_kind = c.rank == 0 ? "foot" : c.rank == 1 ? "vertex" : "balance";
+      starts = ranked_starts(all_segments, n);
     }
-    // The symmetric copy of the ray in [0, 2π/n), so that the piece is the slice next to the
-    // positive x-axis (exactly the same piece up to the rotation).
-    const double sigma0 =
-        std::atan2(r.start_direction[1].to_double(), r.start_direction[0].to_double());
-    const int turns = int(std::floor(reduce(sigma0, 2 * kPi) / (2 * kPi / n)));
-    r.start_direction = g.rotate(r.start_direction, n - turns % n);
-    const double sigma =
-        std::atan2(r.start_direction[1].to_double(), r.start_direction[0].to_double());
-    r.start_angle_deg = reduce(sigma, 2 * kPi / n) * 180 / kPi;
-    r.smallest_new_angle_deg = smallest_new_angle_deg(seg_d, sigma);
-    r.smallest_new_angle_at_x_axis_deg = smallest_new_angle_deg(seg_d, 0);
-    const P d0 = r.start_direction, d1 = g.rotate(d0, 1);
-    half_planes.push_back({-d0[1], d0[0]});             // cross(d0, x) >= 0
-    if (n >= 3) half_planes.push_back({d1[1], -d1[0]}); // cross(x, d1) >= 0
     for (int k = 0; k < n; ++k) r.group.push_back({k, 0});
+    // A ray of Algorithm 6.3 may run through a reflex vertex so that the piece touches itself
+    // there; then the next-ranked ray is taken (a given --start is not replaced).
+    const std::size_t tries = std::min<std::size_t>(starts.size(), 16);
+    for (std::size_t t = 0;; ++t) {
+      const Candidate& c = starts[t];
+      P d0{embed(c.exact[0], g.field), embed(c.exact[1], g.field)};
+      // The symmetric copy of the ray in [0, 2π/n), so that the piece is the slice next to the
+      // positive x-axis (exactly the same piece up to the rotation).
+      const double sigma0 = std::atan2(d0[1].to_double(), d0[0].to_double());
+      const int turns = int(std::floor(reduce(sigma0, 2 * kPi) / (2 * kPi / n)));
+      d0 = g.rotate(d0, n - turns % n);
+      const P d1 = g.rotate(d0, 1);
+      std::vector<P> half_planes{{-d0[1], d0[0]}};        // cross(d0, x) >= 0
+      if (n >= 3) half_planes.push_back({d1[1], -d1[0]}); // cross(x, d1) >= 0
+      try {
+        r.pieces = cut_by(half_planes);
+      } catch (const CutError&) {
+        if (t + 1 >= tries) throw;
+        continue;
+      }
+      r.start_direction = d0;
+      r.start_kind = c.rank < 0    ? "given"
+                     : c.rank == 0 ? "foot"
+                     : c.rank == 1 ? "vertex"
+                                   : "balance";
+      const double sigma = std::atan2(d0[1].to_double(), d0[0].to_double());
+      r.start_angle_deg = reduce(sigma, 2 * kPi / n) * 180 / kPi;
+      r.smallest_new_angle_deg = smallest_new_angle_deg(seg_d, sigma);
+      r.smallest_new_angle_at_x_axis_deg = smallest_new_angle_deg(seg_d, 0);
+      break;
+    }
   } else if (n >= 2) {
     // Algorithm 6.5: between the mirror line and the mirror line turned by π/n.
     const P& m = g.mirrors[0];
     const auto [c, s] = cos_sin(1, 2 * n, g.field);
-    half_planes.push_back(m);
-    half_planes.push_back({-(c * m[0] - s * m[1]), -(s * m[0] + c * m[1])});
     for (int k = 0; k < n; ++k) {
       r.group.push_back({k, 0});
       r.group.push_back({k, 1});
     }
+    r.pieces = cut_by({m, {-(c * m[0] - s * m[1]), -(s * m[0] + c * m[1])}});
   } else {
-    for (const auto& m : g.mirrors) half_planes.push_back(m);
     for (unsigned bits = 0; bits < (1u << g.mirrors.size()); ++bits) r.group.push_back({0, bits});
+    r.pieces = cut_by(g.mirrors);
   }
-
-  for (const auto& [region, tris] : whole.triangles) {
-    std::vector<std::vector<P>> clipped;
-    for (const auto& tri : tris) {
-      std::vector<P> piece = tri;
-      for (const auto& h : half_planes) piece = clip(piece, h);
-      if (piece.size() >= 3 && twice_area(piece).sign() > 0) clipped.push_back(std::move(piece));
-    }
-    if (clipped.empty()) continue;
-    auto pieces = trace_pieces(region, clipped, boundary_vertices[region]);
-    r.pieces.insert(r.pieces.end(), pieces.begin(), pieces.end());
-  }
-  if (r.pieces.empty()) throw CutError("the cut leaves nothing of the object");
   return r;
 }
 
