@@ -102,7 +102,8 @@ void rotation_reduction_without_invariance(const RotationalStructure& s) {
 }
 
 /// spec/lemmas.md#lemma-4-2-line-meshes over K_m: the boundary complexes split uniformly for a
-/// random size h, decided face by face for all pairs and up to the rotation (pairs with copy 0);
+/// random size h, decided face by face for all pairs and up to the rotation (pairs of copy 0 and a
+/// copy k <= n/2);
 /// both verdicts equal the direct check of AT of the written-out line meshes. `rotation` is the
 /// count passed as rotation_copies (0: all pairs only).
 void line_mesh_reduction_equals_direct(const RotationalStructure& s, std::size_t rotation) {

@@ -59,6 +59,35 @@ then pass "gear --start 1,0: the given ray is kept"; else fail "gear --start 1,0
 # Two orthogonal mirrors (Algorithm 6.4) on the octagon, whose mirrors include both axes.
 cut_and_mesh octagon_quadrant ngon-8 reflective 0.05 0 0 -- --mirror 1,0 --mirror 0,1
 
+# Two regions (an inner octagon and the ring around it) cut by the rotation give two templates,
+# each instanced by the 8 rotations: the rotational method (copy 0 against copies k <= n/2)
+# and the bpp method (all pairs) must write the same mesh.
+$PY - "$TMP/rings.json" <<'EOF'
+import json, sys
+ring = lambda r: [[f"{r}*cos(2pi*{k}/8)", f"{r}*sin(2pi*{k}/8)"] for k in range(8)]
+doc = {"symmesh": "templated-structure/1", "dimension": 2, "templates": [
+    {"name": "inner", "kind": "geometry", "polygon": ring("1/2"),
+     "instances": [{"transformation": {"identity": {}}, "region": 1}]},
+    {"name": "outer", "kind": "geometry", "polygon": ring("1"), "holes": [ring("1/2")],
+     "instances": [{"transformation": {"identity": {}}, "region": 2}]}]}
+json.dump(doc, open(sys.argv[1], "w"))
+EOF
+if "$BIN" cut "$TMP/rings.json" --rotation 8 -o "$TMP/rings_slice.json" --quiet \
+   && [ "$($PY -c "import json,sys; print(len(json.load(open(sys.argv[1]))['templates']))" "$TMP/rings_slice.json")" = 2 ] \
+   && "$BIN" generate "$TMP/rings_slice.json" --size 0.05 --method rotational -o "$TMP/rings_rot.vtu" --quiet \
+   && "$BIN" generate "$TMP/rings_slice.json" --size 0.05 --method bpp -o "$TMP/rings_bpp.vtu" --quiet \
+   && cmp -s "$TMP/rings_rot.vtu" "$TMP/rings_bpp.vtu"; then
+  pass "two-region slice: rotational and bpp meshes are byte-identical"
+else fail "two-region slice: rotational vs bpp"; fi
+
+# --method auto runs the specialised method the piece admits (checked exactly).
+for pair in octagon:rotational star_half_slice:combined mosfet_half:reflective octagon_quadrant:reflective; do
+  piece=${pair%%:*} want=${pair#*:}
+  "$BIN" generate "$TMP/$piece.json" --size 0.1 -o "$TMP/auto.vtu" --report "$TMP/auto.json" --quiet \
+    && got=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['method'])" "$TMP/auto.json") \
+    && [ "$got" = "$want" ] && pass "auto on $piece runs $want" || fail "auto on $piece: ${got:-failed}, expected $want"
+done
+
 # Deterministic: the same cut twice is byte-identical.
 "$BIN" cut "$TMP/gear.json" --rotation 12 -o "$TMP/gear_again.json" --quiet
 "$BIN" cut "$TMP/gear.json" --rotation 12 -o "$TMP/gear_third.json" --quiet

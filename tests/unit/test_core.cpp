@@ -369,3 +369,31 @@ TEST(Predicates, SeparationFiltersNeverContradictTheExactLP2D) {
 TEST(Predicates, SeparationFiltersNeverContradictTheExactLP3D) {
   separation_filters_agree_with_lp<3>();
 }
+
+// Eq. 4.2 up to the rotation (spec/lemmas.md#lemma-4-2-rotational): with two templates instanced
+// by the quarter turns, deciding copy 0 against copies k <= n/2 finds the same overlaps as all
+// pairs — including an overlap that only the pair ((1,0), (2,3)), k = 3 > n/2, shows directly
+// (it is found as ((2,0), (1,1)) instead).
+TEST(FindInstanceOverlap, UpToTheRotationAgreesWithAllPairs) {
+  const auto quarter = [](int k) {
+    static const int c[] = {1, 0, -1, 0}, s[] = {0, 1, 0, -1};
+    return T2::rotation_2d(Exact(c[k % 4]), Exact(s[k % 4]), p2(0, 0));
+  };
+  const auto structure = [&](std::vector<P2> a, std::vector<P2> b) {
+    TemplatedStructure<Exact, 2> x;
+    for (auto* pts : {&a, &b}) {
+      x.templates.push_back({"t", TemplateKind::geometry, complex2(*pts, {Simplex{0, 1, 2}})});
+      x.instances.emplace_back();
+      for (int k = 0; k < 4; ++k) x.instances.back().push_back({quarter(k), 1});
+    }
+    return x;
+  };
+  // The first quadrant as two triangles (0°–45°, 45°–90°), turned four times: no overlap.
+  const auto apart = structure({p2(0, 0), p2(1, 0), p2(1, 1)}, {p2(0, 0), p2(1, 1), p2(0, 1)});
+  EXPECT_FALSE(find_instance_overlap(apart).has_value());
+  EXPECT_FALSE(find_instance_overlap(apart, 4).has_value());
+  // Template 2 = template 1 turned once: instance (2, 3) = (1, 0).
+  const auto twice = structure({p2(0, 0), p2(1, 0), p2(0, 1)}, {p2(0, 0), p2(0, 1), p2(-1, 0)});
+  EXPECT_TRUE(find_instance_overlap(twice).has_value());
+  EXPECT_TRUE(find_instance_overlap(twice, 4).has_value());
+}

@@ -179,7 +179,8 @@ void add_generate(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-angle", o->min_angle, "smallest angle in degrees, at most 33.8")
       ->capture_default_str();
   cmd->add_option("--method", o->method,
-                  "auto (rotational when the structure is one, else bpp) | bpp (Algorithm 5.6) | "
+                  "auto (the first of rotational, combined, reflective that the structure is, else "
+                  "bpp) | bpp (Algorithm 5.6) | "
                   "rotational (slices of a rotational symmetry, Section 6.3/Algorithm 6.2) | "
                   "reflective (Algorithms 6.1/6.4) | combined (reflective-rotational, Algorithm "
                   "6.5) | sao (small-angle optimisation, Section 6.3.2: a rotational slice is "

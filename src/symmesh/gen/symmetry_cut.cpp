@@ -638,6 +638,7 @@ CutResult cut_to_fundamental_piece(const core::TemplatedStructure<Cyclotomic, 2>
     // A ray of Algorithm 6.3 may run through a reflex vertex so that the piece touches itself
     // there; then the next-ranked ray is taken (a given --start is not replaced).
     const std::size_t tries = std::min<std::size_t>(starts.size(), 16);
+    std::optional<CutError> first_error; // the best ray's, reported if no ray works
     for (std::size_t t = 0;; ++t) {
       const Candidate& c = starts[t];
       P d0{embed(c.exact[0], g.field), embed(c.exact[1], g.field)};
@@ -651,8 +652,9 @@ CutResult cut_to_fundamental_piece(const core::TemplatedStructure<Cyclotomic, 2>
       if (n >= 3) half_planes.push_back({d1[1], -d1[0]}); // cross(x, d1) >= 0
       try {
         r.pieces = cut_by(half_planes);
-      } catch (const CutError&) {
-        if (t + 1 >= tries) throw;
+      } catch (const CutError& e) {
+        if (!first_error) first_error = e;
+        if (t + 1 >= tries) throw *first_error;
         continue;
       }
       r.start_direction = d0;

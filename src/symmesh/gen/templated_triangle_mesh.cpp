@@ -483,7 +483,7 @@ bool boundary_is_line_mesh(const mesh::Mesh& m, const BoundaryInput& in, std::st
 /// of the subdivision faces, after checking that the mesher kept it as the template's boundary;
 /// the check then runs face pair by face pair (spec/lemmas.md#lemma-4-2-line-meshes).
 /// `rotations` > 0: x was checked to be invariant under its rotation of that order
-/// (rotation_order), so only the pairs with a copy 0 are decided
+/// (rotation_order), so only the pairs of a copy 0 and a copy k <= n/2 are decided
 /// (spec/lemmas.md#lemma-4-2-rotational).
 template <class FT>
 core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
@@ -997,9 +997,23 @@ template <class FT>
 GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method method,
                              const GenerationOptions& options) {
   std::string unused;
-  if (method == Method::automatic)
-    method =
-        x.instances.size() > 0 && rotation_order(x, unused) > 0 ? Method::rotational : Method::bpp;
+  if (method == Method::automatic) {
+    // The most specialised method whose exact check passes (the cut of `symmesh cut` gives each
+    // of them its input); bpp needs no symmetry.
+    const auto is_group = [&](Symmetry kind) {
+      try {
+        symmetry_copies(x, kind);
+        return true;
+      } catch (const std::invalid_argument&) {
+        return false;
+      }
+    };
+    method = x.instances.empty()              ? Method::bpp
+             : rotation_order(x, unused) > 0  ? Method::rotational
+             : is_group(Symmetry::combined)   ? Method::combined
+             : is_group(Symmetry::reflective) ? Method::reflective
+                                              : Method::bpp;
+  }
   GenerationResult r;
   switch (method) {
   case Method::rotational:

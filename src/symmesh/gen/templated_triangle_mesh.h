@@ -55,7 +55,8 @@ struct GenerationResult {
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):
-///  automatic    rotational when the structure is one (checked exactly), else bpp;
+///  automatic    the first of rotational, combined, reflective whose exact check passes, else
+///               bpp;
 ///  bpp          Algorithm 5.6 over the boundary patch partition;
 ///  rotational   Section 6.3 with Algorithm 6.2: every template instanced by the n rotations
 ///               T_{i,k} = R^k ∘ T_{i,0} (checked exactly); the BPP of the first two copies,

@@ -343,6 +343,8 @@ Cyclotomic CyclotomicField::sin_2pi(long k, long n) const {
 }
 
 bool CyclotomicField::is_half_two_cos(const Cyclotomic& x, long j, int sign) const {
+  if (sign != 1 && sign != -1)
+    throw std::invalid_argument("is_cos_2pi/is_sin_2pi: sign must be +1 or -1");
   if (x.field() && !x.field()->same_field(*this)) return false;
   j %= m_;
   if (j < 0) j += m_;
