@@ -37,6 +37,12 @@ for method in rotational conventional gmsh; do
   run "$bin" generate "$out/ngon-slice-64.json" --size 0.02 --min-angle 25 --method "$method" \
     -o "$out/ngon-slice-64.$method.vtu" --report "$out/ngon-slice-64.$method.report.json" --quiet || exit 1
 done
+# A whole gear cut into its slice (Algorithm 6.2, first ray by Algorithm 6.3), then meshed by the
+# rotational method (auto picks it).
+run "$bin" example gear -o "$out/gear.json" || exit 1
+run "$bin" cut "$out/gear.json" --rotation 12 -o "$out/gear.slice.json" --report "$out/gear.cut.json" || exit 1
+run "$bin" generate "$out/gear.slice.json" --size 0.02 --min-angle 25 -o "$out/gear.vtu" \
+  --report "$out/gear.report.json" --quiet || exit 1
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"
