@@ -5,6 +5,7 @@
 #include "symmesh/core/structure_report.h"
 #include "symmesh/gen/symmetry_cut.h"
 #include "symmesh/io/atomic_file.h"
+#include "symmesh/io/number_text.h"
 #include "symmesh/io/templated_structure_json.h"
 
 #include <nlohmann/json.hpp>
@@ -41,14 +42,8 @@ gen::CutPoint parse_vector(const std::string& text, const std::string& what) {
   return p;
 }
 
-std::string number_text(const Cyclotomic& v) {
-  if (v.is_rational()) return v.rational_value().get_str();
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 J point_json(const gen::CutPoint& p) {
-  return J::array({number_text(p[0]), number_text(p[1])});
+  return J::array({io::number_text(p[0]), io::number_text(p[1])});
 }
 J ring_json(const std::vector<gen::CutPoint>& ring) {
   J out = J::array();
@@ -72,8 +67,8 @@ std::string symmetry_text(const gen::CutResult& r) {
   std::string s;
   if (r.rotation_order >= 2) s = "rotation of order " + std::to_string(r.rotation_order);
   for (const auto& m : r.mirrors)
-    s += (s.empty() ? "" : " and ") + std::string("mirror with normal (") + number_text(m[0]) +
-         ", " + number_text(m[1]) + ")";
+    s += (s.empty() ? "" : " and ") + std::string("mirror with normal (") + io::number_text(m[0]) +
+         ", " + io::number_text(m[1]) + ")";
   return s;
 }
 

@@ -1,5 +1,6 @@
 // The cut of a whole symmetric object into its fundamental piece (spec/generation.md#cut).
 #include "symmesh/gen/symmetry_cut.h"
+#include "symmesh/number/subfield_embedding.h"
 
 #include <algorithm>
 #include <bit>
@@ -87,12 +88,7 @@ Cyclotomic embed(const Cyclotomic& v, const CyclotomicFieldPtr& F) {
     throw CutError("internal error: a number of K_" + std::to_string(v.field()->m()) +
                    " does not embed into the cut's field");
   if (F->same_field(*v.field())) return v;
-  // c_a = 2cos(2π/a) = 2cos(2π (m/a) / m): Horner in the basis of K_a.
-  const Cyclotomic c = F->two_cos_2pi_over_m(F->m() / v.field()->m());
-  Cyclotomic out = F->zero();
-  const auto& co = v.coefficients();
-  for (std::size_t i = co.size(); i-- > 0;) out = out * c + F->element({co[i]});
-  return out;
+  return number::embed_subfield_element(*F, v.field()->m(), v.coefficients());
 }
 
 /// cos and sin of 2πk/n: rational for quarter turns, else in F (\pre n | F's m and 4 | m).

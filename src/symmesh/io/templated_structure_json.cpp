@@ -6,6 +6,8 @@
 // polygon are triangulated exactly with a constrained Delaunay triangulation. Eq. 4.2 and
 // conformity are not checked here: that is core::analyse.
 #include "symmesh/io/templated_structure_json.h"
+#include "symmesh/io/number_text.h"
+#include "symmesh/number/subfield_embedding.h"
 
 #include "symmesh/core/element_complex.h"
 #include "symmesh/number/cyclotomic_cgal.h"
@@ -685,12 +687,7 @@ FT evaluate(const NumberExpr& e, const std::string& raw, const std::string& path
   if constexpr (std::is_same_v<FT, Exact>) {
     fail(path, "internal error: a field element in the rational kernel");
   } else {
-    // K_{m'} ⊂ K_m (m' | m): its generator 2cos(2π/m') is 2cos(2π(m/m')/m); Horner.
-    const FT c = t_field->two_cos_2pi_over_m(long(t_field->m() / w.m));
-    FT v = t_field->zero();
-    for (std::size_t i = w.coefficients.size(); i-- > 0;)
-      v = v * c + from_rational<FT>(w.coefficients[i]);
-    return v;
+    return number::embed_subfield_element(*t_field, int(w.m), w.coefficients);
   }
 }
 
@@ -1478,6 +1475,10 @@ std::string element_complex_to_json(const core::ElementComplex<FT, D>& m) {
 }
 
 } // namespace
+
+std::string number_text(const number::Cyclotomic& x) {
+  return number_text<number::Cyclotomic>(x);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Public API
