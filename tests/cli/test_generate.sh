@@ -94,6 +94,32 @@ $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['quality']['be
   "$TMP/sao-bpp.json" && pass "bpp alone misses 30° on the SAO 128-gon (the check can fail)" \
   || fail "bpp already meets 30° on the SAO 128-gon: the sao test shows nothing"
 
+# sao where the request cannot be met: an input angle below it (the aircraft's 14.9° tail) is
+# refused at once, and refinement that grades towards a 36° star tip without end stops after the
+# face was made 32 times finer (it ran for minutes before); both exit 2 with no file, in seconds.
+"$BIN" example aircraft -o "$TMP/aircraft.json"
+"$BIN" example star -o "$TMP/star.json"
+expect_exit 2 "sao with --min-angle above an input angle" -- timeout 60 "$BIN" generate "$TMP/aircraft.json" \
+  --size 0.05 --min-angle 30 --method sao -o "$TMP/sao-air.vtu"
+grep -q "template 'half' has an angle of 14.9" "$TMP/stderr" && [ "$(wc -l < "$TMP/stderr")" -eq 1 ] \
+  && pass "the error names the template and its angle" || fail "error: $(cat "$TMP/stderr")"
+expect_exit 2 "sao grading towards a 36° tip" -- timeout 60 "$BIN" generate "$TMP/star.json" --size 0.05 \
+  --min-angle 30 --method sao -o "$TMP/sao-star.vtu"
+grep -q "32 times finer.*36° at (1, 0)" "$TMP/stderr" && pass "the error names the segment and the tip" \
+  || fail "error: $(cat "$TMP/stderr")"
+[ ! -e "$TMP/sao-air.vtu" ] && [ ! -e "$TMP/sao-star.vtu" ] && pass "no file for an unmet sao request" \
+  || fail "file written for an unmet sao request"
+# At 25° the star converges; the rotated star's ring slice needed the split test to look at the
+# constraint, not the edge (a split point rounded off its segment left the edge in place).
+for name in star star-rotational; do
+  "$BIN" example $name -o "$TMP/$name.json"
+  if "$BIN" generate "$TMP/$name.json" --size 0.02 --min-angle 25 --method sao -o "$TMP/$name-sao.vtu" \
+      --report "$TMP/$name-sao.json" --quiet 2> "$TMP/err" && \
+     $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['quality']['below_min_angle'] == 0 \
+and r['min_angle_deg'] >= 25, r['min_angle_deg']" "$TMP/$name-sao.json"; then
+    pass "$name: sao meets 25°"; else fail "$name: sao at 25°: $(cat "$TMP/err")"; fi
+done
+
 # Reflective (Algorithms 6.1/6.4) and reflective-rotational (Algorithm 6.5) methods: conforming,
 # the geometry's area, and the mesh maps onto itself under the mirror / the rotation.
 "$BIN" example mosfet -o "$TMP/mosfet.json"

@@ -12,6 +12,7 @@
 #include <CGAL/Lazy_exact_nt.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -19,6 +20,8 @@
 #include <memory>
 #include <numeric>
 #include <cstdint>
+#include <iomanip>
+#include <numbers>
 #include <sstream>
 #include <tuple>
 
@@ -510,6 +513,46 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
   return core::check_line_mesh_conformity(lines, rotations);
 }
 
+/// The smallest angle of a template's region at a boundary vertex (the sum of the angles its
+/// triangles have there), with the template and the vertex. Any triangulation of the template
+/// keeps the vertex and splits that angle among its triangles, so one of them has an angle no
+/// larger: no method can meet a --min-angle above it (spec/generation.md#sao).
+struct InputAngle {
+  double degrees = 180;
+  std::size_t template_index = 0;
+  double x = 0, y = 0;
+};
+
+template <class FT>
+InputAngle smallest_input_angle(const core::TemplatedStructure<FT, 2>& x) {
+  InputAngle best;
+  for (std::size_t t = 0; t < x.templates.size(); ++t) {
+    const auto& m = x.templates[t].mesh;
+    std::vector<std::array<double, 2>> p;
+    for (const auto& q : m.points) p.push_back({rounded(q[0]), rounded(q[1])});
+    std::vector<double> angle(p.size(), 0);
+    std::map<std::pair<core::VertexId, core::VertexId>, int> edge_use;
+    for (const auto& c : m.cells()) {
+      if (c.dim() != 2) continue;
+      for (int k = 0; k < 3; ++k) {
+        const auto v = c.v[k], a = c.v[(k + 1) % 3], b = c.v[(k + 2) % 3];
+        const double ux = p[a][0] - p[v][0], uy = p[a][1] - p[v][1];
+        const double wx = p[b][0] - p[v][0], wy = p[b][1] - p[v][1];
+        angle[v] += std::abs(std::atan2(ux * wy - uy * wx, ux * wx + uy * wy));
+        ++edge_use[std::minmax(a, b)];
+      }
+    }
+    for (const auto& [e, uses] : edge_use) {
+      if (uses != 1) continue;
+      for (const auto v : {e.first, e.second}) {
+        const double deg = angle[v] * 180 / std::numbers::pi;
+        if (deg < best.degrees) best = {deg, t, p[v][0], p[v][1]};
+      }
+    }
+  }
+  return best;
+}
+
 /// spec/generation.md#sao: mesh every template with the full Delaunay refinement (which may
 /// split boundary segments); wherever it split a segment of face f, double N on every face
 /// related to f by a template boundary mapping (so mapped faces keep equal N and the old split
@@ -518,11 +561,14 @@ core::Lemma42Verdict certify(const core::TemplatedStructure<FT, 2>& x,
 /// Throws MeshingError after kMaxRounds rounds. (The re-split line meshes of the later rounds
 /// are timed with the meshing.)
 template <class FT>
-std::vector<TriangleMeshOutput>
-refine_line_meshes_for_angle(const core::BoundaryPatchPartition<FT, 2>& bpp, const FT& h2,
-                             const GenerationOptions& o,
-                             std::vector<TemplateBoundary<FT>>& boundaries) {
+std::vector<TriangleMeshOutput> refine_line_meshes_for_angle(
+    const core::BoundaryPatchPartition<FT, 2>& bpp, const FT& h2, const GenerationOptions& o,
+    std::vector<TemplateBoundary<FT>>& boundaries, const std::string& smallest_angle) {
   constexpr int kMaxRounds = 12;
+  // Next to an input angle below 60° Delaunay refinement grades towards the corner without end
+  // (every doubling is met by a further split there), and each doubling of a whole face makes the
+  // templates' meshes larger; a face refined 32 times as finely ends the rounds.
+  constexpr std::size_t kMaxRefinement = 32;
   const std::size_t nt = boundaries.size();
   std::vector<std::size_t> offset(nt + 1, 0);
   for (std::size_t t = 0; t < nt; ++t) offset[t + 1] = offset[t] + boundaries[t].lines.size();
@@ -536,6 +582,7 @@ refine_line_meshes_for_angle(const core::BoundaryPatchPartition<FT, 2>& bpp, con
   std::vector<std::vector<std::size_t>> parts(nt);
   for (std::size_t t = 0; t < nt; ++t)
     for (const auto& line : boundaries[t].lines) parts[t].push_back(line.n);
+  const auto initial_parts = parts;
   for (int round = 1;; ++round) {
     std::vector<TriangleMeshOutput> out;
     std::vector<bool> refine(offset[nt], false);
@@ -556,6 +603,19 @@ refine_line_meshes_for_angle(const core::BoundaryPatchPartition<FT, 2>& bpp, con
     for (std::size_t t = 0; t < nt; ++t) {
       for (std::size_t f = 0; f < parts[t].size(); ++f)
         if (parts[t][f] > 0 && refine[classes.find(offset[t] + f)]) {
+          if (parts[t][f] >= kMaxRefinement * initial_parts[t][f]) {
+            const auto& line = boundaries[t].lines[f];
+            const auto& pts = boundaries[t].input.points;
+            std::ostringstream m;
+            m << std::setprecision(4) << "--min-angle " << o.min_angle_deg
+              << ": the mesher still splits the boundary segment (" << pts[line.a][0] << ", "
+              << pts[line.a][1] << ")-(" << pts[line.b][0] << ", " << pts[line.b][1]
+              << ") after its line mesh was made " << kMaxRefinement
+              << " times finer; Delaunay refinement grades without end towards input angles "
+                 "below 60° ("
+              << smallest_angle << ")";
+            throw MeshingError(m.str());
+          }
           parts[t][f] *= 2;
           ++faces;
         }
@@ -579,6 +639,21 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   if (!x.all_of_kind(core::TemplateKind::geometry))
     throw std::invalid_argument("Algorithm 5.6 needs geometry templates (\"kind\": \"geometry\")");
+  std::string smallest_angle;
+  if (refine_for_angle) {
+    const auto a = smallest_input_angle(x);
+    std::ostringstream where;
+    where << std::setprecision(4) << "template '" << x.templates[a.template_index].name
+          << "' has an angle of " << a.degrees << "° at (" << a.x << ", " << a.y << ")";
+    smallest_angle = where.str();
+    if (a.degrees < o.min_angle_deg) {
+      std::ostringstream m;
+      m << "--method sao --min-angle " << o.min_angle_deg << ": " << smallest_angle
+        << ", so every triangulation of it has a triangle with an angle that small; lower "
+           "--min-angle, or use another method (the report counts the triangles below it)";
+      throw std::invalid_argument(m.str());
+    }
+  }
   // The rotational check comes first (timed with the BPP, whose shortcut it licenses): it lets
   // Eq. 4.2 be checked up to the rotation too.
   std::size_t rotations = 0;
@@ -641,7 +716,8 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   f0 = minor_faults();
   std::vector<TriangleMeshOutput> meshed;
   if (refine_for_angle) {
-    meshed = refine_line_meshes_for_angle(bpp, h2, o, boundaries); // rounds: timed as meshing
+    meshed = refine_line_meshes_for_angle(bpp, h2, o, boundaries,
+                                          smallest_angle); // rounds: timed as meshing
   } else {
     for (const auto& b : boundaries)
       meshed.push_back(mesh_domain_2(b.input, {o.size, o.min_angle_deg}));

@@ -94,10 +94,15 @@ TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingPar
     CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
     mesher.init(true);
     mesher.refine_mesh();
-    // A split segment is no longer an edge between its two input vertices (combinatorial).
+    // A split segment is no longer a constrained edge between its two input vertices
+    // (combinatorial). The edge itself may survive unconstrained: the split point, rounded off
+    // the segment, can leave a flat triangle on it.
     for (std::size_t k = 0; k < boundary.segments.size(); ++k) {
       const auto& s = boundary.segments[k];
-      if (!cdt.is_edge(vh[s[0]], vh[s[1]])) out.split_segments.push_back(k);
+      Cdt::Face_handle f;
+      int i = 0;
+      if (!cdt.is_edge(vh[s[0]], vh[s[1]], f, i) || !cdt.is_constrained({f, i}))
+        out.split_segments.push_back(k);
     }
     if (!out.split_segments.empty()) return out;
   } else {
