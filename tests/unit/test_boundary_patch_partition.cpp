@@ -253,6 +253,34 @@ TEST(BoundaryPatchPartition, Figure68PatchesNotVisibleFromOneSlice) {
   EXPECT_TRUE(b.regular());
 }
 
+// Def 4.7 as listed by template_boundary_mappings: the inverse's domain holds the images of the
+// domain's vertices, piece for piece and vertex for vertex (the BPP reads images off it instead
+// of applying the map), and it is the pull-back to the other template (on its boundary).
+template <int D>
+void expect_inverse_domains_are_images(const TemplatedStructure<Exact, D>& x) {
+  const auto ms = template_boundary_mappings(x);
+  std::size_t checked = 0;
+  for (const auto& m : ms) {
+    if (m.whole_boundary) continue;
+    const auto& image = ms[m.inverse].domain;
+    ASSERT_EQ(image.size(), m.domain.size()) << m.name();
+    for (std::size_t k = 0; k < m.domain.size(); ++k) {
+      ASSERT_EQ(image[k].vertices.size(), m.domain[k].vertices.size()) << m.name();
+      for (std::size_t j = 0; j < m.domain[k].vertices.size(); ++j, ++checked)
+        EXPECT_EQ(m.map(m.domain[k].vertices[j]), image[k].vertices[j]) << m.name();
+    }
+  }
+  EXPECT_GT(checked, 0u);
+}
+
+TEST(TemplateBoundaryMappings, InverseDomainListsTheImagesVertexForVertex) {
+  for (const char* f : {"fig_4_10_partition.json", "fig_4_7_indirect_neighbours.json",
+                        "fig_4_11_irregular.json", "fig_6_8_multiregion_rotational.json"})
+    expect_inverse_domains_are_images(fixture<2>(f));
+  for (const char* f : {"cube_mirrored_halves_3d.json", "rotational_slice_3d.json"})
+    expect_inverse_domains_are_images(fixture<3>(f));
+}
+
 // Def 4.8 on template boundary elements of a templated mesh (Lemma 4.4 (ii)): Fig. 4.3 maps
 // elements onto elements; Fig. 4.4 (not a templated mesh) does not, and names the element.
 TEST(BoundaryElementRelation, TemplatedMeshVersusNonConforming) {

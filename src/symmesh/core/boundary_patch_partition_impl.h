@@ -10,6 +10,7 @@
 #pragma once
 #include "symmesh/core/boundary_patch_partition.h"
 
+#include "symmesh/core/interface_conformity.h"
 #include "symmesh/core/kernel.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -166,19 +168,23 @@ void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
   }
 }
 
+template <class FT, int D>
+EnclosingBox<FT, D> enclosure(const PointVec<FT, D>& p) {
+  std::vector<VertexId> all(p.size());
+  std::iota(all.begin(), all.end(), VertexId(0));
+  return EnclosingBox<FT, D>::of(p, all);
+}
+
 /// interf_geo(a, b) = bnd(inst a) ∩ bnd(inst b) for non-overlapping pure instances, as convex
 /// pieces in world coordinates, deduplicated (sorted vertex sets).
 template <class FT, int D>
-std::vector<DomainPiece<FT, D>> geometry_interface_pieces(const std::vector<PointVec<FT, D>>& fa,
-                                                          const std::vector<PointVec<FT, D>>& fb) {
+std::vector<DomainPiece<FT, D>> geometry_interface_pieces(
+    const std::vector<PointVec<FT, D>>& fa, const std::vector<EnclosingBox<FT, D>>& ba,
+    const std::vector<PointVec<FT, D>>& fb, const std::vector<EnclosingBox<FT, D>>& bb) {
   std::vector<DomainPiece<FT, D>> raw;
-  std::vector<Box<FT, D>> bb;
-  for (const auto& f : fb) bb.push_back(box_of<FT, D>(f));
-  for (const auto& f : fa) {
-    const auto ba = box_of<FT, D>(f);
+  for (std::size_t j = 0; j < fa.size(); ++j)
     for (std::size_t k = 0; k < fb.size(); ++k)
-      if (ba.overlaps(bb[k])) add_intersection<FT, D>(f, fb[k], raw);
-  }
+      if (ba[j].may_meet(bb[k])) add_intersection<FT, D>(fa[j], fb[k], raw);
   std::vector<DomainPiece<FT, D>> out;
   for (auto& p : raw) {
     auto key = p.vertices;
@@ -197,12 +203,23 @@ std::vector<DomainPiece<FT, D>> geometry_interface_pieces(const std::vector<Poin
   return out;
 }
 
+/// The pieces in the coordinates of the instance with world facets `world` (the instance's
+/// transformation applied to `local`, facet for facet): a piece vertex that is a facet end of
+/// that instance becomes the template's own point (no arithmetic, and later comparisons with it
+/// are by identity), any other is mapped by `t_inverse`.
 template <class FT, int D>
-std::vector<DomainPiece<FT, D>> pull_back(const std::vector<DomainPiece<FT, D>>& pieces,
-                                          const RigidTransformation<FT, D>& t_inverse) {
+std::vector<DomainPiece<FT, D>>
+pull_back(const std::vector<DomainPiece<FT, D>>& pieces, const std::vector<PointVec<FT, D>>& world,
+          const std::vector<PointVec<FT, D>>& local, const RigidTransformation<FT, D>& t_inverse) {
   auto out = pieces;
   for (auto& p : out)
-    for (auto& v : p.vertices) v = t_inverse(v);
+    for (auto& v : p.vertices) {
+      const Point<FT, D>* same = nullptr;
+      for (std::size_t k = 0; k < world.size() && !same; ++k)
+        for (std::size_t j = 0; j < world[k].size() && !same; ++j)
+          if (world[k][j] == v) same = &local[k][j];
+      v = same ? *same : t_inverse(v);
+    }
   return out;
 }
 
@@ -221,37 +238,60 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_f
     id.inverse = out.size();
     out.push_back(id);
   }
-  const auto si = apply_template(x);
+  // Instances and their world boundary facets only: identifying equal world points as AT
+  // (apply_template) does would decide every shared coordinate exactly, for nothing here.
+  const auto ids = x.instance_ids();
   std::vector<std::vector<PointVec<FT, D>>> facets; // per instance, world coordinates
   std::vector<std::vector<PointVec<FT, D>>> template_facets;
+  // Boxes are certified enclosures (intervals): filters that never decide a shared coordinate
+  // exactly; the segment intersections decide.
+  std::vector<EnclosingBox<FT, D>> instance_box;
+  std::vector<std::vector<EnclosingBox<FT, D>>> facet_boxes;
+  std::vector<RigidTransformation<FT, D>> inverse; // T^{-1} per instance, once
   for (const auto& t : x.templates) template_facets.push_back(boundary_facets(t.mesh));
-  for (auto id : si.ids) {
+  for (auto id : ids) {
+    inverse.push_back(x.tf(id).inverse());
     auto f = template_facets[id.i];
+    PointVec<FT, D> ends;
     for (auto& s : f)
-      for (auto& p : s) p = x.tf(id)(p);
+      for (auto& p : s) {
+        p = x.tf(id)(p);
+        ends.push_back(p);
+      }
+    instance_box.push_back(enclosure<FT, D>(ends));
+    facet_boxes.emplace_back();
+    for (const auto& s : f) facet_boxes.back().push_back(enclosure<FT, D>(s));
     facets.push_back(std::move(f));
   }
   // interf_geo = bnd ∩ bnd for non-overlapping instances, so two instances are neighbours iff
   // some two boundary facets meet; this avoids the cell-pair tests of neighbouring_instances.
   std::vector<std::pair<std::size_t, std::size_t>> candidates;
-  for_each_overlapping_pair<FT, D>(si.instance_box, [&](std::size_t a, std::size_t b) {
-    candidates.emplace_back(std::min(a, b), std::max(a, b));
-    return true;
+  std::vector<std::size_t> order(ids.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return instance_box[a].lo[0] < instance_box[b].lo[0];
   });
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t j = i + 1; j < order.size(); ++j) {
+      const auto &a = instance_box[order[i]], &b = instance_box[order[j]];
+      if (a.hi[0] < b.lo[0]) break; // sweep along x
+      if (a.may_meet(b, 1)) candidates.emplace_back(std::minmax(order[i], order[j]));
+    }
   std::sort(candidates.begin(), candidates.end());
   for (const auto& [a, b] : candidates) {
-    const auto pieces = geometry_interface_pieces<FT, D>(facets[a], facets[b]);
+    const auto pieces =
+        geometry_interface_pieces<FT, D>(facets[a], facet_boxes[a], facets[b], facet_boxes[b]);
     if (pieces.empty()) continue;
-    const auto ia = si.ids[a], ib = si.ids[b];
+    const auto ia = ids[a], ib = ids[b];
     TemplateBoundaryMapping<FT, D> ab, ba;
     ab.to = ia;
     ab.from = ib;
     ab.map = x.tf(ia).inverse() * x.tf(ib);
-    ab.domain = pull_back<FT, D>(pieces, x.tf(ib).inverse());
+    ab.domain = pull_back<FT, D>(pieces, facets[b], template_facets[ib.i], inverse[b]);
     ba.to = ib;
     ba.from = ia;
     ba.map = ab.map.inverse(); // = T_b^{-1} ∘ T_a exactly; a transpose, not a product
-    ba.domain = pull_back<FT, D>(pieces, x.tf(ia).inverse());
+    ba.domain = pull_back<FT, D>(pieces, facets[a], template_facets[ia.i], inverse[a]);
     ab.inverse = out.size() + 1;
     ba.inverse = out.size();
     out.push_back(std::move(ab));
@@ -281,6 +321,21 @@ MappingIndex<FT, D> index_mappings(const std::vector<TemplateBoundaryMapping<FT,
     if (!ms[m].whole_boundary) ix.from[ms[m].from_template()].push_back(m);
   }
   return ix;
+}
+
+/// The image of x under mapping m, x in m's domain. The inverse's domain lists the same world
+/// pieces vertex for vertex, so the image of a domain vertex is read off it (exact, and the
+/// template's own point where the pull-back found one); the trivial mapping is the identity.
+template <class FT, int D>
+Point<FT, D> apply_mapping(const std::vector<TemplateBoundaryMapping<FT, D>>& ms, std::size_t m,
+                           const Point<FT, D>& x) {
+  const auto& mp = ms[m];
+  if (mp.whole_boundary) return x;
+  const auto& image = ms[mp.inverse].domain;
+  for (std::size_t k = 0; k < mp.domain.size(); ++k)
+    for (std::size_t j = 0; j < mp.domain[k].vertices.size(); ++j)
+      if (mp.domain[k].vertices[j] == x) return image[k].vertices[j];
+  return mp.map(x);
 }
 
 template <class FT, int D>
@@ -365,7 +420,8 @@ close_subdivisions_2d(const TemplatedStructure<FT, 2>& x,
     const auto [t, p] = work.front();
     work.pop_front();
     for (std::size_t mi : ix.from[t])
-      if (applies<FT, 2>(ms[mi], ix.box[mi], p)) insert(ms[mi].to_template(), ms[mi].map(p), true);
+      if (applies<FT, 2>(ms[mi], ix.box[mi], p))
+        insert(ms[mi].to_template(), apply_mapping<FT, 2>(ms, mi, p), true);
   }
   std::vector<BoundarySubdivision<FT, 2>> out(nt);
   for (std::size_t t = 0; t < nt; ++t) {
@@ -635,18 +691,6 @@ face_keys(const std::vector<BoundarySubdivision<FT, D>>& sub) {
   return out;
 }
 
-/// Affinely independent subset (at most D+1 points) spanning the affine hull of `pts`.
-template <class FT, int D>
-PointVec<FT, D> affine_basis(const PointVec<FT, D>& pts) {
-  PointVec<FT, D> b;
-  for (const auto& p : pts) {
-    if (int(b.size()) == D + 1) break;
-    b.push_back(p);
-    if (!affinely_independent<FT, D>(b)) b.pop_back();
-  }
-  return b;
-}
-
 } // namespace
 
 template <class FT, int D>
@@ -679,7 +723,7 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
       if (!mp.whole_boundary) {
         std::vector<VertexId> img;
         for (VertexId v : src.faces[f].vertices)
-          img.push_back(vertex_id(dst, mp.map(src.points[v])));
+          img.push_back(vertex_id(dst, apply_mapping<FT, D>(r.mappings, m, src.points[v])));
         std::sort(img.begin(), img.end());
         auto it = keys[d].find({src.faces[f].dimension, img});
         if (it == keys[d].end())
@@ -839,37 +883,55 @@ BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<
     }
   }
 
-  // BFS per class with composition potentials (maps only; the words are read off the BFS tree
-  // when needed); an inconsistent arrow witnesses irregularity.
+  // BFS per class with composition potentials; an inconsistent arrow witnesses irregularity
+  // (Eq. 4.13). Two rigid maps agree on a patch iff they agree on an affine basis of its vertices,
+  // and every mapping sends subdivision vertices to subdivision vertices, so a potential is kept
+  // as the vertex ids of the basis images, read off the automaton on vertex faces: no products
+  // of exact maps (the words are read off the BFS tree when needed).
+  auto vertex_step = [&](std::size_t t, VertexId v, std::size_t letter) {
+    const auto& out = delta[offset[t] + v];
+    const auto it =
+        std::lower_bound(out.begin(), out.end(), std::make_pair(letter, std::size_t(0)));
+    if (it == out.end() || it->first != letter)
+      throw std::logic_error("boundary subdivision: a mapping applies to a patch but not to a "
+                             "vertex of its closure");
+    return VertexId(it->second - offset[r.mappings[letter].to_template()]);
+  };
   r.tree_parent.assign(np, std::nullopt);
-  std::vector<std::optional<RigidTransformation<FT, D>>> pot(np);
+  std::vector<std::optional<std::vector<VertexId>>> pot(np);
   for (const auto& cls : r.classes) {
     const std::size_t root = cls.front();
     const auto& rs = r.subdivisions[r.patches[root].template_index];
-    PointVec<FT, D> rp;
+    std::vector<VertexId> ids; // in lexicographic point order, as the subdivision numbers them
     for (std::size_t f : r.patches[root].faces)
-      for (VertexId v : rs.faces[f].vertices) rp.push_back(rs.points[v]);
-    std::sort(rp.begin(), rp.end(), PointLess<FT, D>());
-    rp.erase(std::unique(rp.begin(), rp.end()), rp.end());
-    const auto basis = affine_basis<FT, D>(rp);
-    auto agree = [&](const RigidTransformation<FT, D>& a, const RigidTransformation<FT, D>& b) {
-      for (const auto& p : basis)
-        if (a(p) != b(p)) return false;
-      return true;
-    };
-    pot[root] = RigidTransformation<FT, D>();
+      for (VertexId v : rs.faces[f].vertices) ids.push_back(v);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    std::vector<VertexId> basis;
+    PointVec<FT, D> basis_points;
+    for (VertexId v : ids) {
+      if (int(basis.size()) == D + 1) break;
+      basis_points.push_back(rs.points[v]);
+      if (affinely_independent<FT, D>(basis_points))
+        basis.push_back(v);
+      else
+        basis_points.pop_back();
+    }
+    pot[root] = basis;
     std::deque<std::size_t> queue{root};
     while (!queue.empty()) {
       const std::size_t p = queue.front();
       queue.pop_front();
       for (std::size_t ai : out_arrows[p]) {
         const auto& a = r.arrows[ai];
-        const auto c = r.mappings[a.letter].map * *pot[p];
+        std::vector<VertexId> c;
+        for (VertexId v : *pot[p])
+          c.push_back(vertex_step(r.patches[p].template_index, v, a.letter));
         if (!pot[a.to]) {
-          pot[a.to] = c;
+          pot[a.to] = std::move(c);
           r.tree_parent[a.to] = a;
           queue.push_back(a.to);
-        } else if (!r.irregularity && !agree(*pot[a.to], c)) {
+        } else if (!r.irregularity && *pot[a.to] != c) {
           IrregularityWitness<FT, D> w;
           w.patch = root;
           w.target = a.to;

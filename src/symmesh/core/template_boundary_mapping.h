@@ -42,12 +42,15 @@ bool piece_contains(const DomainPiece<FT, D>& piece, const Point<FT, D>& x) {
 
 template <class FT, int D>
 struct TemplateBoundaryMapping {
-  InstanceId to;                          ///< T_{i,g}: the image lies on bnd(X_i)
-  InstanceId from;                        ///< T_{j,h}: the domain lies on bnd(X_j)
-  RigidTransformation<FT, D> map;         ///< T_{i,g}^{-1} ∘ T_{j,h}
-  std::vector<DomainPiece<FT, D>> domain; ///< on bnd(X_j); unused when whole_boundary
-  bool whole_boundary = false;            ///< the trivial 𝕋_{T,T} = I on bnd*(X_j)
-  std::size_t inverse = 0;                ///< index of 𝕋_{T_{j,h},T_{i,g}} in the same list
+  InstanceId to;                  ///< T_{i,g}: the image lies on bnd(X_i)
+  InstanceId from;                ///< T_{j,h}: the domain lies on bnd(X_j)
+  RigidTransformation<FT, D> map; ///< T_{i,g}^{-1} ∘ T_{j,h}
+  /// On bnd(X_j); unused when whole_boundary. template_boundary_mappings lists the inverse's
+  /// domain as the same world pieces pulled back to X_i, vertex for vertex, so it holds the
+  /// images of these vertices (the BPP reads images off it).
+  std::vector<DomainPiece<FT, D>> domain;
+  bool whole_boundary = false; ///< the trivial 𝕋_{T,T} = I on bnd*(X_j)
+  std::size_t inverse = 0;     ///< index of 𝕋_{T_{j,h},T_{i,g}} in the same list
 
   std::size_t from_template() const { return from.i; }
   std::size_t to_template() const { return to.i; }
