@@ -558,7 +558,8 @@ InputAngle smallest_input_angle(const core::TemplatedStructure<FT, 2>& x) {
 /// related to f by a template boundary mapping (so mapped faces keep equal N and the old split
 /// points stay), and mesh again, until no template needs a boundary split. Then every triangle
 /// meets the shape criterion and the boundaries are the line meshes, as Algorithm 5.6 needs.
-/// Throws MeshingError after kMaxRounds rounds. (The re-split line meshes of the later rounds
+/// Throws MeshingError after kMaxRounds rounds, or once a face would be refined more than
+/// kMaxRefinement times as finely as at the start. (The re-split line meshes of the later rounds
 /// are timed with the meshing.)
 template <class FT>
 std::vector<TriangleMeshOutput> refine_line_meshes_for_angle(
