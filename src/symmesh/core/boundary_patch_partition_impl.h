@@ -266,17 +266,10 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_f
   // interf_geo = bnd ∩ bnd for non-overlapping instances, so two instances are neighbours iff
   // some two boundary facets meet; this avoids the cell-pair tests of neighbouring_instances.
   std::vector<std::pair<std::size_t, std::size_t>> candidates;
-  std::vector<std::size_t> order(ids.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return instance_box[a].lo[0] < instance_box[b].lo[0];
+  for_each_overlapping_box_pair(instance_box, [&](std::size_t a, std::size_t b) {
+    candidates.emplace_back(a, b);
+    return true;
   });
-  for (std::size_t i = 0; i < order.size(); ++i)
-    for (std::size_t j = i + 1; j < order.size(); ++j) {
-      const auto &a = instance_box[order[i]], &b = instance_box[order[j]];
-      if (a.hi[0] < b.lo[0]) break; // sweep along x
-      if (a.may_meet(b, 1)) candidates.emplace_back(std::minmax(order[i], order[j]));
-    }
   std::sort(candidates.begin(), candidates.end());
   for (const auto& [a, b] : candidates) {
     const auto pieces =

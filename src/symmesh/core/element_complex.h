@@ -20,6 +20,7 @@
 #include <optional>
 #include <ostream>
 #include <set>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -385,9 +386,10 @@ Box<FT, D> box_of(const std::vector<Point<FT, D>>& p) {
   return b;
 }
 
-/// Calls f(i, j) for every pair i < j of items whose boxes overlap (sweep along x).
-template <class FT, int D, class F>
-void for_each_overlapping_pair(const std::vector<Box<FT, D>>& boxes, F&& f) {
+/// Calls f(i, j) for every pair i < j of items whose boxes overlap (sweep along x). Any box
+/// type with lo[0], hi[0] and overlaps() (exact Box, or an interval enclosure as a filter).
+template <class BoxT, class F>
+void for_each_overlapping_box_pair(const std::vector<BoxT>& boxes, F&& f) {
   std::vector<std::size_t> order(boxes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(),
@@ -398,6 +400,11 @@ void for_each_overlapping_pair(const std::vector<Box<FT, D>>& boxes, F&& f) {
       if (boxes[order[x]].overlaps(boxes[order[y]]))
         if (!f(std::min(order[x], order[y]), std::max(order[x], order[y]))) return;
     }
+}
+
+template <class FT, int D, class F>
+void for_each_overlapping_pair(const std::vector<Box<FT, D>>& boxes, F&& f) {
+  for_each_overlapping_box_pair(boxes, std::forward<F>(f));
 }
 
 /// Face-completion fc(X) (Def A.10, Eq. A.8) for simplices: all faces of all elements.

@@ -126,6 +126,7 @@ struct EnclosingBox {
     }
     return b;
   }
+  bool overlaps(const EnclosingBox& o) const { return may_meet(o); }
   /// The boxes may meet in dimensions from..D-1.
   bool may_meet(const EnclosingBox& o, int from = 0) const {
     for (int d = from; d < D; ++d)
