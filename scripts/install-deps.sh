@@ -11,7 +11,8 @@ PACKAGES=(
   libgraphviz-dev graphviz
   libcli11-dev nlohmann-json3-dev
   libgmsh-dev gmsh
-  python3-meshio python3-matplotlib
+  zlib1g-dev
+  python3-meshio python3-matplotlib python3-vtk9
 )
 
 # Optional groups: --fuzz adds clang-14 and its libFuzzer/sanitizer runtime (fuzz/run.sh).

@@ -1,15 +1,19 @@
 // symmesh generate GEOMETRY.json --size H [--min-angle A] [--method METHOD (spec/generation.md)]
-//                  -o OUT.{vtu,msh,mesh} [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
+//                  [--max-cells N] -o OUT.{vtu,msh,mesh} [--ascii] [--compress]
+//                  [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/apps/commands.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/io/mesh_writers.h"
 #include "symmesh/io/templated_mesh_file.h"
+#include "symmesh/mesh/progress.h"
 #include "symmesh/mesh/quality.h"
+#include "symmesh/mesh/structure_instance.h"
 #include "symmesh/io/templated_structure_json.h"
 
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -26,8 +30,29 @@ namespace {
 struct GenerateOptions {
   std::string file, out, report, templated, method = "auto";
   double size = 0, min_angle = 20;
-  bool quiet = false;
+  double max_cells = 0; ///< 0: the default from the machine's memory
+  bool quiet = false, ascii = false, compress = false;
 };
+
+/// Peak bytes per structure-instance cell of the most memory-hungry path (the conventional
+/// method meshing AT whole with Mesh_2): 231 MiB at 961 408 triangles of the 128-gon, measured
+/// as the whole command's peak RSS (spec/generation.md#cell-estimate).
+constexpr double kBytesPerCell = 250;
+
+double physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 8.0 * (1ull << 30);
+}
+
+double default_max_cells() {
+  return std::floor(physical_memory_bytes() / kBytesPerCell);
+}
+
+std::string round_text(double v) {
+  std::ostringstream s;
+  s << std::setprecision(3) << v;
+  return s.str();
+}
 
 std::size_t peak_rss_bytes() {
   rusage u{};
@@ -50,6 +75,37 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const
   return gen::generate_triangle_mesh(x, method, g);
 }
 
+struct InfeasibleSize : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Refuses, before any work, a --size that would give more cells than --max-cells.
+void refuse_infeasible_size(const gen::CellEstimate& e, const GenerateOptions& o) {
+  const bool by_default = o.max_cells == 0;
+  const double limit = by_default ? default_max_cells() : o.max_cells;
+  if (e.triangles <= limit) return;
+  throw InfeasibleSize(
+      "--size " + round_text(o.size) + ": the structure instance would have about " +
+      round_text(e.triangles) + " triangles (area " + round_text(e.area) +
+      " at about 0.2·size² per triangle), above the limit of " + round_text(limit) +
+      (by_default
+           ? " (" + round_text(physical_memory_bytes() / double(1ull << 30)) + " GiB of memory / " +
+                 round_text(kBytesPerCell) + " bytes per cell; raise it with --max-cells)"
+           : " (--max-cells)"));
+}
+
+/// MRMESH bytes of AT (Listing 2.2) from its counts: the arrays as mesh::MrMesh::bytes() counts
+/// them, without building it.
+std::size_t mrmesh_bytes(const mesh::StructureInstance& at) {
+  std::size_t indices = 0;
+  for (const auto& t : at.templated().templated.templates)
+    indices += t.mesh.cell_vertex_indices.size() * t.instance_count();
+  const std::size_t nc = at.cell_count();
+  return at.vertex_count() * std::size_t(at.dimension()) * sizeof(mesh::NumericType) +
+         nc * sizeof(mesh::ElementType) + indices * sizeof(mesh::IndexType) +
+         (nc + 1) * sizeof(mesh::IndexType) + nc * sizeof(mesh::RegionIdType);
+}
+
 int run_generate(const GenerateOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
@@ -69,17 +125,30 @@ int run_generate(const GenerateOptions& o) {
     return bad_input;
   }
   if (!(o.size > 0) || !std::isfinite(o.size)) {
-    print_error("--size must be a positive number");
+    print_error("--size " + round_text(o.size) + ": must be a positive number");
     return bad_input;
   }
+  // Mesh_2's Delaunay refinement terminates only for bounds up to about 33.8°.
+  if (!(o.min_angle >= 0 && o.min_angle <= 33.8)) {
+    print_error("--min-angle " + round_text(o.min_angle) +
+                ": must be between 0 and 33.8 degrees (Delaunay refinement does not terminate "
+                "above)");
+    return bad_input;
+  }
+  if (!(o.max_cells >= 0) || !std::isfinite(o.max_cells)) {
+    print_error("--max-cells " + round_text(o.max_cells) + ": must be a positive number");
+    return bad_input;
+  }
+  if (o.compress && (ext != ".vtu" || o.ascii)) {
+    print_error("--compress: applies to binary .vtu output only");
+    return bad_input;
+  }
+  std::unique_ptr<mesh::Progress> progress;
+  if (!o.quiet) progress = std::make_unique<mesh::Progress>("symmesh generate", std::cerr);
   gen::GenerationOptions g;
   g.size = o.size;
   g.min_angle_deg = o.min_angle;
-  if (!o.quiet)
-    g.progress = [&](const std::string& s) {
-      std::cerr << "symmesh generate: " << s << " [" << std::fixed << std::setprecision(2)
-                << elapsed() << " s]\n";
-    };
+  g.progress = progress.get();
   gen::GenerationResult r;
   try {
     const auto x = io::read_templated_structure(o.file);
@@ -87,12 +156,17 @@ int run_generate(const GenerateOptions& o) {
         [&](const auto& s) -> gen::GenerationResult {
           using S = std::decay_t<decltype(s)>;
           if constexpr (std::is_same_v<S, io::Structure2> ||
-                        std::is_same_v<S, io::CyclotomicStructure2>)
+                        std::is_same_v<S, io::CyclotomicStructure2>) {
+            refuse_infeasible_size(gen::estimate_cells(s, o.size), o);
             return run_method(s, o, g);
-          else
+          } else {
             throw std::invalid_argument("generate: 3D templated geometries are not supported yet");
+          }
         },
         x);
+  } catch (const InfeasibleSize& e) {
+    print_error(e.what());
+    return bad_input;
   } catch (const io::InputError& e) {
     print_error(e.what());
     return bad_input;
@@ -109,10 +183,15 @@ int run_generate(const GenerateOptions& o) {
                 r.lemma_4_2_failure + "); no output written");
     return negative;
   }
-  const auto si = mesh::assemble_structure_instance(r.templated);
+  // AT is streamed from the templated mesh, never materialised (mesh/structure_instance.h).
+  const mesh::StructureInstance at(r.templated);
   const auto svb = mesh::to_listing_4_2(r.templated);
   const auto write_start = std::chrono::steady_clock::now();
-  io::write_mesh_file(si, o.out);
+  io::MeshFileOptions w;
+  w.ascii = o.ascii;
+  w.compress = o.compress;
+  w.progress = progress.get();
+  io::write_mesh_file(at, o.out, w);
   if (!o.templated.empty()) io::write_tmesh(r.templated, o.templated);
   const double write_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
@@ -122,12 +201,12 @@ int run_generate(const GenerateOptions& o) {
   j["method"] = r.method;
   j["size"] = o.size;
   j["min_angle_requested_deg"] = o.min_angle;
-  j["cells_structure_instance"] = si.mesh.mesh.cell_count();
-  j["vertices_structure_instance"] = si.mesh.mesh.vertex_count();
+  j["cells_structure_instance"] = at.cell_count();
+  j["vertices_structure_instance"] = at.vertex_count();
   j["cells_templates"] = template_cells;
   j["templates"] = r.templated.templated.templates.size();
   j["instances"] = r.templated.templated.instance_count();
-  j["bytes_mesh"] = si.mesh.bytes();
+  j["bytes_mesh"] = mrmesh_bytes(at);
   j["bytes_templated"] = r.templated.templated.bytes();
   j["bytes_templated_svb"] = svb.bytes();
   j["bytes_templated_svb_compact"] = r.templated.bytes();
@@ -145,7 +224,7 @@ int run_generate(const GenerateOptions& o) {
                                 {"lemma_4_2_certificate", f.certificate}};
   j["seconds_write"] = write_seconds;
   j["peak_rss_bytes"] = peak_rss_bytes();
-  const auto q = mesh::triangle_quality(si.mesh.mesh, o.min_angle);
+  const auto q = mesh::triangle_quality(r.templated.templated, o.min_angle);
   j["min_angle_deg"] = q.min_angle_deg;
   j["quality"] = {{"triangles", q.triangles},
                   {"min_angle_deg", q.min_angle_deg},
@@ -158,11 +237,11 @@ int run_generate(const GenerateOptions& o) {
     std::ofstream os(o.report);
     os << j.dump(2) << "\n";
   }
-  if (!o.quiet)
-    std::cerr << "symmesh generate: " << si.mesh.mesh.cell_count() << " triangles in "
-              << r.templated.templated.instance_count() << " instances of "
-              << r.templated.templated.templates.size() << " templates, written to " << o.out
-              << " [" << std::fixed << std::setprecision(2) << elapsed() << " s]\n";
+  if (progress)
+    progress->message(std::to_string(at.cell_count()) + " triangles in " +
+                      std::to_string(r.templated.templated.instance_count()) + " instances of " +
+                      std::to_string(r.templated.templated.templates.size()) +
+                      " templates, written to " + o.out);
   return ok;
 }
 } // namespace
@@ -188,8 +267,15 @@ void add_generate(CLI::App& app, int& exit_code) {
                   "until every triangle meets --min-angle) | conventional (same mesher on the "
                   "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry)")
       ->capture_default_str();
-  cmd->add_option("-o,--output", o->out, "structure instance: .vtu, .msh (4.1) or .mesh")
+  cmd->add_option("-o,--output", o->out,
+                  "structure instance: .vtu (binary, appended), .msh (4.1 binary) or .mesh "
+                  "(Medit, text)")
       ->required();
+  cmd->add_option("--max-cells", o->max_cells,
+                  "refuse (exit 2, before any work) a --size whose estimated structure-instance "
+                  "cell count is above N (default: memory / 250 bytes per cell)");
+  cmd->add_flag("--ascii", o->ascii, "write .vtu / .msh as text instead of binary");
+  cmd->add_flag("--compress", o->compress, ".vtu: zlib-compressed data blocks (VTK's compressor)");
   cmd->add_option("--report", o->report, "JSON report: cell counts, bytes, seconds, quality");
   cmd->add_option("--templated", o->templated,
                   "also write the templated mesh (.tmesh, spec/outputs.md#tmesh)");

@@ -63,6 +63,24 @@ double rounded(const FT& v) {
   return CGAL::to_double(CGAL::exact(v));
 }
 
+/// Triangles Mesh_2 makes per size² of area (spec/generation.md#cell-estimate).
+constexpr double kTriangleAreaPerSize2 = 0.2;
+
+/// Exact area of a geometry template's carrier: the sum of its triangles' areas.
+template <class FT>
+FT carrier_area(const core::ElementComplex<FT, 2>& c) {
+  FT twice(0);
+  for (const auto& e : c.elements) {
+    if (e.dim() != 2) continue;
+    const auto& a = c.points[e.v[0]];
+    const auto& b = c.points[e.v[1]];
+    const auto& d = c.points[e.v[2]];
+    const FT o = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    twice += CGAL::is_negative(o) ? -o : o;
+  }
+  return twice / FT(2);
+}
+
 /// The line mesh of one edge face [a, b] (subdivision point ids): N parts; interior points get
 /// local ids first .. first+N-2.
 struct FaceLine {
@@ -589,7 +607,11 @@ std::vector<TriangleMeshOutput> refine_line_meshes_for_angle(
     std::vector<bool> refine(offset[nt], false);
     std::size_t split = 0;
     for (std::size_t t = 0; t < nt; ++t) {
-      out.push_back(mesh_domain_2(boundaries[t].input, {o.size, o.min_angle_deg, true}));
+      MeshingParameters p;
+      p.size = o.size;
+      p.min_angle_deg = o.min_angle_deg;
+      p.report_boundary_splits = true;
+      out.push_back(mesh_domain_2(boundaries[t].input, p));
       for (std::size_t s : out.back().split_segments) {
         refine[classes.find(offset[t] + boundaries[t].segment_face[s])] = true;
         ++split;
@@ -623,9 +645,9 @@ std::vector<TriangleMeshOutput> refine_line_meshes_for_angle(
       boundaries[t] = line_meshes<FT>(bpp.subdivisions[t], h2, o.size, &parts[t]);
     }
     if (o.progress)
-      o.progress("sao: round " + std::to_string(round) + ": the mesher split " +
-                 std::to_string(split) + " boundary segments; " + std::to_string(faces) +
-                 " faces split twice as finely");
+      o.progress->message("sao: round " + std::to_string(round) + ": the mesher split " +
+                          std::to_string(split) + " boundary segments; " + std::to_string(faces) +
+                          " faces split twice as finely");
   }
 }
 
@@ -670,11 +692,16 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     symmetry_seconds = seconds_since(ts);
   }
   const long faults_symmetry = minor_faults() - faults_before_bpp;
+  const auto say = [&](const std::string& s) {
+    if (o.progress) o.progress->message(s);
+  };
+  const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
+    if (o.progress) o.progress->stage(name, total, unit);
+  };
+  stage("instance overlap (Eq. 4.2)", 0, "");
   if (const auto overlap = core::find_instance_overlap(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
-  const auto say = [&](const std::string& s) {
-    if (o.progress) o.progress(s);
-  };
+  stage("boundary patch partition", 0, "");
   GenerationResult r;
   auto t0 = Clock::now();
   long f0 = minor_faults();
@@ -704,6 +731,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
       std::to_string(bpp.mappings.size()) + " mappings");
 
+  stage("line meshes", 0, "");
   t0 = Clock::now();
   f0 = minor_faults();
   const FT h = exact_from_double<FT>(o.size);
@@ -716,12 +744,25 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   t0 = Clock::now();
   f0 = minor_faults();
   std::vector<TriangleMeshOutput> meshed;
+  std::size_t estimated = 0;
+  for (const auto& t : x.templates)
+    estimated +=
+        std::size_t(rounded(carrier_area(t.mesh)) / (kTriangleAreaPerSize2 * o.size * o.size));
+  stage("template meshing", estimated, "triangles (total estimated)");
   if (refine_for_angle) {
     meshed = refine_line_meshes_for_angle(bpp, h2, o, boundaries,
                                           smallest_angle); // rounds: timed as meshing
   } else {
-    for (const auto& b : boundaries)
-      meshed.push_back(mesh_domain_2(b.input, {o.size, o.min_angle_deg}));
+    std::size_t done = 0;
+    for (const auto& b : boundaries) {
+      MeshingParameters p;
+      p.size = o.size;
+      p.min_angle_deg = o.min_angle_deg;
+      if (o.progress) p.on_progress = [&](std::size_t n) { o.progress->set_done(done + n); };
+      meshed.push_back(mesh_domain_2(b.input, p));
+      done += meshed.back().triangles.size();
+      if (o.progress) o.progress->set_done(done);
+    }
   }
   auto& tm = r.templated.templated;
   tm.point_dimension = 2;
@@ -735,6 +776,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
                                     mesh::IndexType(c[2])};
       t.mesh.add_cell(mesh::ElementType::triangle, v);
     }
+    orient_triangles_positively(t.mesh);
     for (const auto& inst : x.instances[i]) {
       t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
       t.region_ids.push_back(mesh::RegionIdType(inst.region));
@@ -747,6 +789,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.template_meshing = seconds_since(t0);
   faults.template_meshing = minor_faults() - f0;
 
+  stage("shared vertex bookkeeping", 0, "");
   t0 = Clock::now();
   f0 = minor_faults();
   auto candidates = svb_candidates(x, bpp, boundaries, rotations, copies);
@@ -755,6 +798,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.svb = seconds_since(t0);
   faults.svb = minor_faults() - f0;
 
+  stage("Lemma 4.2 certificate", 0, "");
   t0 = Clock::now();
   f0 = minor_faults();
   const auto verdict = certify(x, boundaries, tm, rotations);
@@ -836,6 +880,7 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
   GenerationResult r;
   const auto t0 = Clock::now();
   const long f0 = minor_faults();
+  if (o.progress) o.progress->stage("gmsh meshing", 0, "");
   const auto g = mesh_with_gmsh(in, o.size);
   r.timings.template_meshing = seconds_since(t0);
   r.timings.page_faults.template_meshing = minor_faults() - f0;
@@ -854,6 +899,7 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
       }
       mt.mesh.add_cell(mesh::ElementType::triangle, v);
     }
+    orient_triangles_positively(mt.mesh);
     mt.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
     mt.region_ids.push_back(mesh::RegionIdType(in.regions[t].id));
     mesh::Transformation identity;
@@ -861,8 +907,8 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
     identity.translation = {0, 0};
     tm.transformations.push_back(identity);
     if (o.progress)
-      o.progress("gmsh: region " + std::to_string(in.regions[t].id) + ": " +
-                 std::to_string(mt.mesh.cell_count()) + " triangles");
+      o.progress->message("gmsh: region " + std::to_string(in.regions[t].id) + ": " +
+                          std::to_string(mt.mesh.cell_count()) + " triangles");
     tm.templates.push_back(std::move(mt));
   }
   // SVB from the shared node numbers, one table per pair of regions that share nodes.
@@ -1130,6 +1176,24 @@ GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method me
   return r;
 }
 } // namespace
+
+template <class FT>
+CellEstimate estimate(const core::TemplatedStructure<FT, 2>& x, double size) {
+  FT area(0);
+  for (std::size_t i = 0; i < x.templates.size() && i < x.instances.size(); ++i)
+    area += carrier_area(x.templates[i].mesh) * FT(int(x.instances[i].size()));
+  CellEstimate e;
+  e.area = rounded(area);
+  e.triangles = e.area / (kTriangleAreaPerSize2 * size * size);
+  return e;
+}
+
+CellEstimate estimate_cells(const core::TemplatedStructure<Exact, 2>& x, double size) {
+  return estimate(x, size);
+}
+CellEstimate estimate_cells(const core::TemplatedStructure<number::Cyclotomic, 2>& x, double size) {
+  return estimate(lazily(x), size);
+}
 
 GenerationResult generate_triangle_mesh(const core::TemplatedStructure<Exact, 2>& x, Method method,
                                         const GenerationOptions& options) {

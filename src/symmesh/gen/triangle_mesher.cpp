@@ -60,7 +60,39 @@ void mark_by_nesting_parity(Cdt& cdt) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
     f->set_in_domain(!cdt.is_infinite(f) && level[f] % 2 == 1);
 }
+/// refine_mesh() one inserted point at a time: Mesher_level's step-by-step refinement takes the
+/// same elements in the same order, so the mesh is the same; it lets progress be reported.
+template <class Mesher>
+void refine_with_progress(Mesher& mesher, const Cdt& cdt, const MeshingParameters& p) {
+  if (!p.on_progress) {
+    mesher.refine_mesh();
+    return;
+  }
+  std::size_t steps = 0;
+  while (mesher.step_by_step_refine_mesh())
+    if ((++steps & 0xfff) == 0) p.on_progress(cdt.number_of_faces());
+}
 } // namespace
+
+void orient_triangles_positively(mesh::Mesh& m) {
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.cell_types[c] != mesh::ElementType::triangle) continue;
+    auto* v = m.cell_vertex_indices.data() + m.cell_vertex_index_offsets[c];
+    const auto point = [&](int k) {
+      const double* x = m.vertex(std::size_t(v[k]));
+      return K::Point_2(x[0], x[1]);
+    };
+    switch (CGAL::orientation(point(0), point(1), point(2))) {
+    case CGAL::COUNTERCLOCKWISE:
+      break;
+    case CGAL::CLOCKWISE:
+      std::swap(v[1], v[2]);
+      break;
+    default:
+      throw MeshingError("a triangle of the mesh has zero area");
+    }
+  }
+}
 
 TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingParameters& p) {
   if (!(p.size > 0) || !std::isfinite(p.size))
@@ -93,7 +125,7 @@ TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingPar
   if (p.report_boundary_splits) {
     CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
     mesher.init(true);
-    mesher.refine_mesh();
+    refine_with_progress(mesher, cdt, p);
     // A split segment is no longer a constrained edge between its two input vertices
     // (combinatorial). The edge itself may survive unconstrained: the split point, rounded off
     // the segment, can leave a flat triangle on it.
@@ -108,7 +140,7 @@ TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingPar
   } else {
     CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, Criteria> mesher(cdt, Criteria(b, p.size));
     mesher.init(true);
-    mesher.refine_mesh();
+    refine_with_progress(mesher, cdt, p);
   }
   out.points = boundary.points;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {

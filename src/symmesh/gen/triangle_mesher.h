@@ -8,8 +8,11 @@
 /// holes need no seeds. The output keeps the input vertices first, in input order, which is what
 /// lets the generator name boundary vertices combinatorially.
 #pragma once
+#include "symmesh/mesh/mesh.h"
+
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,6 +27,9 @@ struct MeshingParameters {
   /// line meshes and meshes again (spec/generation.md#sao). The output is a valid mesh of the
   /// given boundary only when no segment was split.
   bool report_boundary_splits = false;
+  /// Called now and then during refinement with the number of triangles so far (all faces of
+  /// the triangulation, inside the domain or not), for progress lines.
+  std::function<void(std::size_t)> on_progress;
 };
 
 struct BoundaryInput {
@@ -43,6 +49,11 @@ struct TriangleMeshOutput {
 struct MeshingError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// Puts every triangle of m in counter-clockwise order (exact orientation predicate on its double
+/// coordinates), so that templates are positively oriented whatever mesher made them. Throws
+/// MeshingError for a degenerate (zero-area) triangle.
+void orient_triangles_positively(mesh::Mesh& m);
 
 /// \pre parameters.size > 0; 0 <= min_angle_deg <= 33.8 (Mesh_2's termination bound)
 TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary,

@@ -39,4 +39,23 @@ QualityStatistics triangle_quality(const Mesh& m, double bound_deg) {
   return q;
 }
 
+QualityStatistics triangle_quality(const TemplatedMesh& t, double bound_deg) {
+  QualityStatistics q;
+  q.bound_deg = bound_deg;
+  q.min_angle_deg = 180;
+  for (const auto& tm : t.templates) {
+    const std::size_t copies = tm.instance_count();
+    if (copies == 0 || tm.mesh.cell_count() == 0) continue;
+    const auto one = triangle_quality(tm.mesh, bound_deg);
+    q.triangles += one.triangles * copies;
+    q.below_bound += one.below_bound * copies;
+    for (std::size_t b = 0; b < q.histogram.size(); ++b)
+      q.histogram[b] += one.histogram[b] * copies;
+    q.min_angle_deg = std::min(q.min_angle_deg, one.min_angle_deg);
+    q.max_radius_edge_ratio = std::max(q.max_radius_edge_ratio, one.max_radius_edge_ratio);
+  }
+  if (q.triangles == 0) q.min_angle_deg = 0;
+  return q;
+}
+
 } // namespace symmesh::mesh

@@ -6,6 +6,7 @@
 /// 1/√3), and how many triangles have a smallest angle below a requested bound.
 #pragma once
 #include "symmesh/mesh/mesh.h"
+#include "symmesh/mesh/templated_mesh.h"
 
 #include <array>
 #include <cstddef>
@@ -23,5 +24,10 @@ struct QualityStatistics {
 
 /// \pre every cell of m is a triangle
 QualityStatistics triangle_quality(const Mesh& m, double bound_deg);
+
+/// The statistics of the structure instance AT from the templates alone: a rigid map keeps
+/// every angle and ratio, so each template's statistics count once per instance.
+/// \pre every template cell is a triangle
+QualityStatistics triangle_quality(const TemplatedMesh& t, double bound_deg);
 
 } // namespace symmesh::mesh

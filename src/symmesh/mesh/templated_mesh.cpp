@@ -1,6 +1,6 @@
 // MESH/MRMESH and the templated mesh structures (spec/mesh-data-structures.md).
 #include "symmesh/mesh/templated_mesh.h"
-#include "symmesh/mesh/union_find.h"
+#include "symmesh/mesh/structure_instance.h"
 
 #include <map>
 #include <numeric>
@@ -138,16 +138,6 @@ struct InstanceIndex {
   }
 };
 
-UnionFind identified_vertices(const TemplatedMeshCompactSvb& t, const InstanceIndex& index) {
-  UnionFind uf(index.total_vertices);
-  for (const auto& id : t.identifications) {
-    const auto& table = t.tables[std::size_t(id.table)];
-    for (auto [from, to] : table.pairs)
-      uf.unite(index.first_vertex[std::size_t(id.from_instance)] + std::size_t(from),
-               index.first_vertex[std::size_t(id.to_instance)] + std::size_t(to));
-  }
-  return uf;
-}
 } // namespace
 
 bool TemplatedMeshCompactSvb::is_valid(std::ostream* why) const {
@@ -187,74 +177,53 @@ bool TemplatedMeshCompactSvb::is_valid(std::ostream* why) const {
 }
 
 StructureInstanceMesh assemble_structure_instance(const TemplatedMeshCompactSvb& t) {
-  const InstanceIndex index(t.templated);
-  UnionFind uf = identified_vertices(t, index);
-  const int n = t.templated.point_dimension;
+  const StructureInstance at(t);
   StructureInstanceMesh out;
-  out.mesh.mesh.point_dimension = n;
-  std::vector<IndexType> global(index.total_vertices, -1);
-  std::size_t k = 0; // global instance number
-  std::vector<NumericType> x(std::size_t(n), 0.0);
-  for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
-    const auto& tm = t.templated.templates[i];
-    for (std::size_t g = 0; g < tm.instance_count(); ++g, ++k) {
-      const auto& f = t.templated.transformations[std::size_t(tm.transformation_indices[g])];
-      for (std::size_t v = 0; v < tm.mesh.vertex_count(); ++v) {
-        const std::size_t root = uf.find(index.first_vertex[k] + v);
-        if (global[root] < 0) {
-          f.apply(tm.mesh.vertex(v), x.data());
-          global[root] = out.mesh.mesh.add_vertex(x.data());
-        }
-      }
-      for (std::size_t c = 0; c < tm.mesh.cell_count(); ++c) {
-        std::array<IndexType, 4> cv{};
-        const int nv = vertex_count(tm.mesh.cell_types[c]);
-        for (int q = 0; q < nv; ++q)
-          cv[std::size_t(q)] =
-              global[uf.find(index.first_vertex[k] + std::size_t(tm.mesh.cell(c)[q]))];
-        out.mesh.mesh.add_cell(tm.mesh.cell_types[c], cv.data());
-        out.mesh.cell_region.push_back(tm.region_ids[g]);
-        out.cell_template.push_back(IndexType(i));
-        out.cell_instance.push_back(IndexType(k));
-      }
-    }
-  }
+  out.mesh.mesh.point_dimension = at.dimension();
+  out.mesh.mesh.vertex_coords.reserve(at.vertex_count() * std::size_t(at.dimension()));
+  at.for_each_vertex([&](const NumericType* x) { out.mesh.mesh.add_vertex(x); });
+  at.for_each_cell(
+      [&](const StructureInstance::Instance& in, std::size_t c, const std::array<IndexType, 4>& v) {
+        out.mesh.mesh.add_cell(in.mesh_template->mesh.cell_types[c], v.data());
+        out.mesh.cell_region.push_back(in.region);
+        out.cell_template.push_back(IndexType(in.template_index));
+        out.cell_instance.push_back(IndexType(in.index));
+      });
   return out;
 }
 
 TemplatedMeshSvb to_listing_4_2(const TemplatedMeshCompactSvb& t) {
-  const InstanceIndex index(t.templated);
-  UnionFind uf = identified_vertices(t, index);
-  std::vector<std::size_t> class_size(index.total_vertices, 0);
-  for (std::size_t v = 0; v < index.total_vertices; ++v) class_size[uf.find(v)]++;
+  const StructureInstance at(t);
+  const auto& class_size = at.class_sizes();
   TemplatedMeshSvb out;
   out.point_dimension = t.templated.point_dimension;
   out.transformations = t.templated.transformations;
-  std::map<std::size_t, IndexType> global_of_class;
+  // Global vertices: the identified classes, numbered as they first appear.
+  std::vector<IndexType> global_of_class(class_size.size(), -1);
   std::vector<NumericType> x(std::size_t(out.point_dimension), 0.0);
-  std::size_t k = 0;
   for (const auto& tm : t.templated.templates) {
     MeshTemplateSvb ts;
     ts.mesh = tm.mesh;
-    for (std::size_t g = 0; g < tm.instance_count(); ++g, ++k) {
-      MeshInstanceSvb inst;
-      inst.transformation_index = tm.transformation_indices[g];
-      inst.region_id = tm.region_ids[g];
-      for (std::size_t v = 0; v < tm.mesh.vertex_count(); ++v) {
-        const std::size_t root = uf.find(index.first_vertex[k] + v);
-        if (class_size[root] < 2) continue;
-        auto [it, inserted] = global_of_class.emplace(root, IndexType(out.global_vertex_count()));
-        if (inserted) {
-          out.transformations[std::size_t(inst.transformation_index)].apply(tm.mesh.vertex(v),
-                                                                            x.data());
-          out.global_vertices.insert(out.global_vertices.end(), x.begin(), x.end());
-        }
-        inst.local_to_global_vertex_mapping.emplace_back(IndexType(v), it->second);
-      }
-      ts.instances.push_back(std::move(inst));
-    }
     out.templates.push_back(std::move(ts));
   }
+  at.for_each_instance([&](const StructureInstance::Instance& in) {
+    MeshInstanceSvb inst;
+    const auto& tm = *in.mesh_template;
+    inst.transformation_index = in.transformation_index;
+    inst.region_id = in.region;
+    for (std::size_t v = 0; v < tm.mesh.vertex_count(); ++v) {
+      const IndexType c = at.class_of(in.index, IndexType(v));
+      if (c < 0 || class_size[std::size_t(c)] < 2) continue;
+      auto& g = global_of_class[std::size_t(c)];
+      if (g < 0) {
+        g = IndexType(out.global_vertex_count());
+        in.transformation->apply(tm.mesh.vertex(v), x.data());
+        out.global_vertices.insert(out.global_vertices.end(), x.begin(), x.end());
+      }
+      inst.local_to_global_vertex_mapping.emplace_back(IndexType(v), g);
+    }
+    out.templates[in.template_index].instances.push_back(std::move(inst));
+  });
   return out;
 }
 
