@@ -1,6 +1,7 @@
 """Independent checks of a generated structure instance, read back with meshio (Debian's
 python3-meshio): cell count as reported, conforming (no edge in more than two triangles, the
-boundary edges form closed curves, no two vertices at the same place), and the total area.
+boundary edges form closed curves, no two vertices at the same place), every triangle positively
+oriented (counter-clockwise, spec/outputs.md#orientation), and the total signed area.
 Usage: structure_instance_checks.py MESH REPORT.json EXPECTED_AREA"""
 import collections
 import json
@@ -32,10 +33,13 @@ if any(d % 2 for d in degree.values()):
     problems.append("the boundary edges do not form closed curves (hanging vertex)")
 if len(np.unique(np.round(p, 12), axis=0)) != len(p):
     problems.append("two vertices at the same place (not identified)")
-area = 0.5 * np.abs(np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]])).sum()
+signed = 0.5 * np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]])
+if (signed <= 0).any():
+    problems.append(f"{int((signed <= 0).sum())} of {len(tri)} triangles are not counter-clockwise")
+area = signed.sum()
 if abs(area - expected_area) > 1e-9 * max(1.0, expected_area):
     problems.append(f"area {area}, expected {expected_area}")
 if problems:
     print("; ".join(problems))
     sys.exit(1)
-print(f"{len(tri)} triangles, conforming, area {area:.12g}")
+print(f"{len(tri)} triangles, conforming, all counter-clockwise, area {area:.12g}")

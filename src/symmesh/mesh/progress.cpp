@@ -52,6 +52,7 @@ void Progress::stage(const std::string& name, std::size_t total, const std::stri
   done_.store(0, std::memory_order_relaxed);
   total_.store(total, std::memory_order_relaxed);
   in_stage_ = true;
+  wake_.notify_all();
   // Silent until the heartbeat finds no line for `interval`: short stages print nothing.
 }
 
@@ -64,8 +65,11 @@ void Progress::message(const std::string& line) {
 void Progress::heartbeat() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (!stopping_) {
-    // Wake often enough that a line is never more than a small fraction late.
-    wake_.wait_for(lock, interval_ / 8);
+    // Sleep until the line would be due; stage(), message() and the destructor wake it early.
+    if (in_stage_)
+      wake_.wait_until(lock, last_print_ + interval_);
+    else
+      wake_.wait_for(lock, interval_);
     if (stopping_ || !in_stage_) continue;
     if (std::chrono::steady_clock::now() - last_print_ < interval_) continue;
     const std::size_t done = done_.load(std::memory_order_relaxed);
