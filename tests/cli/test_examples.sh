@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Built-in 2D geometries (spec/examples.md): every example is written, passes `symmesh check` as
 # a templated geometry, and `symmesh generate` meshes it conformingly with the geometry's area
-# (computed independently from the JSON by geometry_area.py); bad names exit 2 with no file.
+# (computed independently from the JSON by geometry_area.py), every triangle counter-clockwise,
+# with the method auto picks and with bpp, conventional and gmsh; the symmetric ones are
+# symmetric; bad names exit 2 with no file.
 source "$(dirname "$0")/common.sh" "$@"
 PY=/usr/bin/python3
 
@@ -30,6 +32,16 @@ example() {
   if gmsh -check "$TMP/$name.msh" > "$TMP/gmsh.out" 2>&1 && grep -q "Info *: $cells elements" "$TMP/gmsh.out"; then
     pass "$name: gmsh opens the .msh ($cells elements)"; else fail "$name: gmsh on the .msh"; tail -3 "$TMP/gmsh.out"; fi
   [ -s "$TMP/$name.tmesh" ] || fail "$name: no .tmesh written"
+  # Every other method on the same object: the reader-side checks (conforming, every triangle
+  # counter-clockwise, the area) hold for each (spec/outputs.md#orientation).
+  local method
+  for method in bpp conventional gmsh; do
+    if ! "$BIN" generate "$geo" --size "$size" --min-angle 25 --method $method -o "$TMP/$name.$method.vtu" \
+        --report "$TMP/$name.$method.json" --quiet 2> "$TMP/err"; then
+      fail "$name: generate --method $method failed"; sed 's/^/  | /' "$TMP/err"; continue; fi
+    if msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.$method.vtu" "$TMP/$name.$method.json" "$area" 2>&1); then
+      pass "$name ($method): $(echo "$msg" | tail -1)"; else fail "$name ($method): $msg"; fi
+  done
 }
 
 # Every built-in object, at a size that gives a few thousand triangles.
@@ -38,6 +50,15 @@ for name in $names; do
     mosfet) size=0.1 ;; aircraft) size=0.2 ;; bridge) size=0.03 ;; *) size=0.06 ;;
   esac
   example "$name" "$size"
+done
+
+# The symmetric objects' structure instances (method auto) map onto themselves under their
+# symmetry: rotation by 2pi/n (n k), or the mirror x -> -x (0 0).
+for case in "ngon-slice-5 5 1" "ngon-slice-8 8 3" "ngon-slice-16 16 1" "star-rotational 5 1" \
+            "star-reflective-rotational 5 2" "mosfet 0 0" "aircraft 0 0"; do
+  set -- $case
+  if msg=$($PY tests/cli/symmetry_check.py "$TMP/$1.vtu" "$2" "$3" 2>&1); then
+    pass "$1 under its symmetry ($2, $3): $msg"; else fail "$1 under its symmetry ($2, $3): $msg"; fi
 done
 
 expect_exit 2 "unknown example" -- "$BIN" example no-such-thing -o "$TMP/none.json"

@@ -165,20 +165,25 @@ int run_generate(const GenerateOptions& o) {
         },
         x);
   } catch (const InfeasibleSize& e) {
+    progress.reset(); // no heartbeat line after the error
     print_error(e.what());
     return bad_input;
   } catch (const io::InputError& e) {
+    progress.reset();
     print_error(e.what());
     return bad_input;
   } catch (const std::invalid_argument& e) {
+    progress.reset();
     print_error(o.file + ": " + e.what());
     return bad_input;
   } catch (const gen::MeshingError& e) {
+    progress.reset();
     print_error(o.file + ": meshing failed: " + e.what());
     return bad_input;
   }
   const double seconds = elapsed();
   if (!r.lemma_4_2_holds) {
+    progress.reset();
     print_error(o.file + ": the generated templated mesh fails the Lemma 4.2 certificate (" +
                 r.lemma_4_2_failure + "); no output written");
     return negative;

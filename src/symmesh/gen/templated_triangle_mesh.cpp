@@ -859,9 +859,9 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
   PlanarRegions in;
   std::map<core::Point<FT, 2>, std::size_t, core::PointLess<FT, 2>> index;
   std::map<std::pair<std::size_t, std::size_t>, int> edge_use;
+  std::vector<core::Point<FT, 2>> exact;
+  std::vector<std::vector<std::array<std::size_t, 2>>> raw(whole.templates.size());
   for (std::size_t t = 0; t < whole.templates.size(); ++t) {
-    PlanarRegions::Region region;
-    region.id = whole.instances[t][0].region;
     const auto bnd = core::mesh_boundary(whole.templates[t].mesh);
     for (const auto& e : bnd.elements) {
       if (e.dim() != 1) continue;
@@ -869,12 +869,49 @@ GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
       for (int k = 0; k < 2; ++k) {
         const auto& p = bnd.points[e.v[k]];
         auto [it, inserted] = index.emplace(p, in.points.size());
-        if (inserted) in.points.push_back({rounded(p[0]), rounded(p[1])});
+        if (inserted) {
+          in.points.push_back({rounded(p[0]), rounded(p[1])});
+          exact.push_back(p);
+        }
         ends[std::size_t(k)] = it->second;
       }
-      region.edges.push_back(ends);
-      ++edge_use[std::minmax(ends[0], ends[1])];
+      raw[t].push_back(ends);
     }
+  }
+  // A region's corner can lie inside a neighbour's boundary edge (a T-junction): that edge is
+  // split there (exact test), or Gmsh would put two nodes at the corner, one on each curve.
+  for (std::size_t t = 0; t < whole.templates.size(); ++t) {
+    PlanarRegions::Region region;
+    region.id = whole.instances[t][0].region;
+    for (const auto [a, b] : raw[t]) {
+      std::vector<std::pair<FT, std::size_t>> inner;
+      const auto& pa = exact[a];
+      const auto& pb = exact[b];
+      const double lo[2] = {std::min(in.points[a][0], in.points[b][0]),
+                            std::min(in.points[a][1], in.points[b][1])};
+      const double hi[2] = {std::max(in.points[a][0], in.points[b][0]),
+                            std::max(in.points[a][1], in.points[b][1])};
+      for (std::size_t v = 0; v < exact.size(); ++v) {
+        const auto& q = in.points[v];
+        // The rounded box, widened, only skips points far from the segment.
+        const double slack = 1e-9 * (1 + hi[0] - lo[0] + hi[1] - lo[1]);
+        if (v == a || v == b || q[0] < lo[0] - slack || q[0] > hi[0] + slack ||
+            q[1] < lo[1] - slack || q[1] > hi[1] + slack)
+          continue;
+        if (core::point_on_segment<FT, 2>(pa, pb, exact[v]))
+          inner.emplace_back(
+              (exact[v][0] - pa[0]) * (pb[0] - pa[0]) + (exact[v][1] - pa[1]) * (pb[1] - pa[1]), v);
+      }
+      std::sort(inner.begin(), inner.end(),
+                [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::size_t from = a;
+      for (const auto& [along, v] : inner) {
+        region.edges.push_back({from, v});
+        from = v;
+      }
+      region.edges.push_back({from, b});
+    }
+    for (const auto& e : region.edges) ++edge_use[std::minmax(e[0], e[1])];
     in.regions.push_back(std::move(region));
   }
   GenerationResult r;
