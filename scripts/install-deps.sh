@@ -11,6 +11,7 @@ PACKAGES=(
   libgraphviz-dev graphviz
   libcli11-dev nlohmann-json3-dev
   libgmsh-dev gmsh
+  libtet1.5-dev
   zlib1g-dev
   python3-meshio python3-matplotlib python3-vtk9
 )

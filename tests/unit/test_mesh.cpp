@@ -125,3 +125,41 @@ TEST(TemplatedMeshFile, RoundTripIsExactAndBadFilesNameTheField) {
   std::remove(path.c_str());
   std::remove(bad.c_str());
 }
+
+TEST(Quality, RegularAndCornerTetrahedraHaveTheirKnownDihedralAnglesAndRatios) {
+  mesh::Mesh m;
+  m.point_dimension = 3;
+  // Regular: every dihedral angle arccos(1/3), R/l = sqrt(6)/4.
+  const double r[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (const auto& p : r) m.add_vertex(p);
+  const mesh::IndexType a[4] = {0, 1, 2, 3};
+  m.add_cell(mesh::ElementType::tetrahedron, a);
+  auto q = mesh::tetrahedron_quality(m, 60);
+  const double regular = std::acos(1.0 / 3) * 180 / M_PI;
+  EXPECT_NEAR(q.min_dihedral_deg, regular, 1e-9);
+  EXPECT_NEAR(q.max_dihedral_deg, regular, 1e-9);
+  EXPECT_NEAR(q.max_radius_edge_ratio, std::sqrt(6.0) / 4, 1e-12);
+  EXPECT_EQ(q.histogram[14], 1u); // [70, 75)
+  EXPECT_EQ(q.below_bound, 0u);
+  // The corner tetrahedron: 90° at the three axis edges, arccos(1/sqrt 3) at the others; its
+  // circumcentre is (1/2, 1/2, 1/2), so R/l = (sqrt 3 / 2) / 1.
+  mesh::Mesh c;
+  c.point_dimension = 3;
+  const double k[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const auto& p : k) c.add_vertex(p);
+  c.add_cell(mesh::ElementType::tetrahedron, a);
+  q = mesh::tetrahedron_quality(c, 60);
+  EXPECT_NEAR(q.max_dihedral_deg, 90, 1e-9);
+  EXPECT_NEAR(q.min_dihedral_deg, std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(q.max_radius_edge_ratio, std::sqrt(3.0) / 2, 1e-12);
+  EXPECT_EQ(q.below_bound, 1u);
+  // A templated mesh of the corner tetrahedron instanced 3 times counts it 3 times.
+  mesh::TemplatedMesh t;
+  t.point_dimension = 3;
+  t.templates.push_back({c, {0, 0, 0}, {1, 1, 1}});
+  t.transformations.push_back({{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}});
+  const auto tq = mesh::tetrahedron_quality(t, 60);
+  EXPECT_EQ(tq.tetrahedra, 3u);
+  EXPECT_EQ(tq.below_bound, 3u);
+  EXPECT_NEAR(tq.min_dihedral_deg, q.min_dihedral_deg, 0);
+}

@@ -20,6 +20,7 @@
 #include "symmesh/core/templated_structure.h"
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -35,6 +36,9 @@ struct BppOptions {
   /// The caller has checked x.is_well_formed() (an exact conformity check of every template);
   /// the BPP does not repeat it.
   bool well_formed_checked = false;
+  /// Progress of the longest step, building the template boundary mappings: (candidate instance
+  /// pairs decided, candidate pairs). Empty: no calls.
+  std::function<void(std::size_t, std::size_t)> on_progress;
 };
 
 /// A face of some template: (template, face index in that template's subdivision).

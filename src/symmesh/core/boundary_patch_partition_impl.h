@@ -227,7 +227,8 @@ pull_back(const std::vector<DomainPiece<FT, D>>& pieces, const std::vector<Point
 
 template <class FT, int D>
 std::vector<TemplateBoundaryMapping<FT, D>>
-template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed) {
+template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed,
+                           const std::function<void(std::size_t, std::size_t)>& on_progress) {
   std::ostringstream why;
   if (check_well_formed && !x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   std::vector<TemplateBoundaryMapping<FT, D>> out;
@@ -271,7 +272,9 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_f
     return true;
   });
   std::sort(candidates.begin(), candidates.end());
+  std::size_t decided = 0;
   for (const auto& [a, b] : candidates) {
+    if (on_progress) on_progress(decided++, candidates.size());
     const auto pieces =
         geometry_interface_pieces<FT, D>(facets[a], facet_boxes[a], facets[b], facet_boxes[b]);
     if (pieces.empty()) continue;
@@ -690,7 +693,7 @@ template <class FT, int D>
 BoundaryPatchPartition<FT, D> boundary_patch_partition(const TemplatedStructure<FT, D>& x,
                                                        const BppOptions& options) {
   BoundaryPatchPartition<FT, D> r;
-  r.mappings = template_boundary_mappings(x, !options.well_formed_checked);
+  r.mappings = template_boundary_mappings(x, !options.well_formed_checked, options.on_progress);
   const std::size_t nt = x.templates.size();
   const auto ix = index_mappings<FT, D>(r.mappings, nt);
   if constexpr (D == 2)
@@ -1223,7 +1226,8 @@ VertexMovement<FT, D> valid_vertex_movement(const BoundaryPatchPartition<FT, D>&
 
 #define SYMMESH_BPP_INSTANTIATE(FT, D)                                                             \
   template std::vector<TemplateBoundaryMapping<FT, D>> template_boundary_mappings<FT, D>(          \
-      const TemplatedStructure<FT, D>&, bool);                                                     \
+      const TemplatedStructure<FT, D>&, bool,                                                      \
+      const std::function<void(std::size_t, std::size_t)>&);                                       \
   template BoundaryPatchPartition<FT, D> boundary_patch_partition<FT, D>(                          \
       const TemplatedStructure<FT, D>&, const BppOptions&);                                        \
   template struct BoundaryPatchPartition<FT, D>;                                                   \

@@ -14,6 +14,7 @@
 #include "symmesh/core/templated_structure.h"
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -70,10 +71,12 @@ struct TemplateBoundaryMapping {
 /// and, for every ordered pair of distinct neighbouring instances (Section 4.2), 𝕋_{T_a,T_b}.
 /// The list is closed under inverses (Section 4.3: 𝕋_{a,b}^{-1} = 𝕋_{b,a}) and ordered
 /// deterministically. \pre x.is_well_formed() (checked unless `check_well_formed` is false:
-/// the caller has checked it) and no two instances overlap (Eq. 4.2)
+/// the caller has checked it) and no two instances overlap (Eq. 4.2). `on_progress(done, total)`,
+/// when given, is called after each candidate pair of instances (boxes overlap) is decided.
 template <class FT, int D>
 std::vector<TemplateBoundaryMapping<FT, D>>
-template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed = true);
+template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed = true,
+                           const std::function<void(std::size_t, std::size_t)>& on_progress = {});
 
 /// A composition of template boundary mappings (Def A.2): letters[0] is applied first. The
 /// rigid map is the product of the letters' maps; its domain is the set of points on which every

@@ -1,4 +1,5 @@
-// The Gmsh peer baseline — spec/generation.md#gmsh
+// The Gmsh peer baseline, built as the module libsymmesh_gmsh.so that gmsh_loader.cpp opens on
+// first use — spec/generation.md#gmsh
 #include "symmesh/gen/gmsh_mesher.h"
 
 #include "symmesh/gen/triangle_mesher.h"
@@ -85,7 +86,7 @@ struct GmshSession {
 
 } // namespace
 
-GmshTriangles mesh_with_gmsh(const PlanarRegions& in, double size) {
+GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& in, double size) {
   if (!(size > 0) || !std::isfinite(size)) throw MeshingError("Gmsh baseline: size must be > 0");
   GmshSession session;
   std::map<std::size_t, int> point_tag;
@@ -164,3 +165,19 @@ GmshTriangles mesh_with_gmsh(const PlanarRegions& in, double size) {
 }
 
 } // namespace symmesh::gen
+
+/// The module's one entry point (looked up by gmsh_loader.cpp). Errors come back as text: no
+/// exception crosses the module boundary.
+extern "C" __attribute__((visibility("default"))) int
+symmesh_mesh_with_gmsh(const symmesh::gen::PlanarRegions* in, double size,
+                       symmesh::gen::GmshTriangles* out, std::string* error) noexcept {
+  try {
+    *out = symmesh::gen::mesh_with_gmsh_in_module(*in, size);
+    return 0;
+  } catch (const std::exception& e) {
+    *error = e.what();
+  } catch (...) {
+    *error = "Gmsh failed";
+  }
+  return 1;
+}

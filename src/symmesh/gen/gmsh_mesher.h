@@ -6,6 +6,14 @@
 /// therefore their mesh nodes; one plane surface per outer loop with its holes) and meshed with
 /// Gmsh's 2D Delaunay algorithm (`Mesh.Algorithm = 5`, `-algo del2d`) at `Mesh.MeshSizeMax =
 /// size`, on one thread. Gmsh has no smallest-angle parameter; quality is measured afterwards.
+///
+/// Gmsh is loaded only when this baseline runs: it lives in the module libsymmesh_gmsh.so,
+/// opened with dlopen(RTLD_LOCAL). Linking libgmsh into symmesh cost every command ~50 ms of
+/// symbol binding at start-up (its dependency tree), and libgmsh carries its own copy of
+/// TetGen's classes, which interposed on libtet's when both were linked (libtet's calls bound
+/// into Gmsh's copy and corrupted the heap); a module opened locally stays out of the global
+/// scope. The module is looked for next to the running executable, then at the path it was
+/// built at.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -29,7 +37,11 @@ struct GmshTriangles {
 };
 
 /// \pre every region's edges form vertex-disjoint simple closed curves; size > 0. Throws
-/// MeshingError (triangle_mesher.h) otherwise or when Gmsh fails.
+/// MeshingError (triangle_mesher.h) otherwise, when Gmsh fails, or when the module cannot be
+/// loaded.
 GmshTriangles mesh_with_gmsh(const PlanarRegions& regions, double size);
+
+/// The implementation inside the module (gmsh_mesher.cpp); callers use mesh_with_gmsh.
+GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& regions, double size);
 
 } // namespace symmesh::gen

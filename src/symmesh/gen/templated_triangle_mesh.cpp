@@ -724,6 +724,12 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   }
   core::BppOptions bpp_options;
   bpp_options.well_formed_checked = true; // above, on x (two_copies has x's templates)
+  if (o.progress)
+    bpp_options.on_progress = [&](std::size_t done, std::size_t total) {
+      if (done == 0)
+        o.progress->stage("boundary patch partition: mappings", total, "instance pairs");
+      o.progress->set_done(done);
+    };
   const auto bpp =
       core::boundary_patch_partition(rotational || group ? two_copies : x, bpp_options);
   r.timings.boundary_patch_partition = symmetry_seconds + seconds_since(t0);

@@ -30,4 +30,22 @@ QualityStatistics triangle_quality(const Mesh& m, double bound_deg);
 /// \pre every template cell is a triangle
 QualityStatistics triangle_quality(const TemplatedMesh& t, double bound_deg);
 
+/// Tetrahedron quality (Definitions 2.12–2.20 for tetrahedra; Table 7.1's measures): dihedral
+/// angles (smallest and largest, a histogram of each tetrahedron's smallest in 5° bins from 0°
+/// to 90°) and the radius-edge ratio R/l_min (largest; the regular tetrahedron has √6/4).
+struct TetrahedronQualityStatistics {
+  std::size_t tetrahedra = 0;
+  double min_dihedral_deg = 0;             ///< smallest dihedral angle of any tetrahedron
+  double max_dihedral_deg = 0;             ///< largest dihedral angle of any tetrahedron
+  double max_radius_edge_ratio = 0;        ///< largest circumradius / shortest edge
+  std::array<std::size_t, 18> histogram{}; ///< smallest dihedral per tetrahedron, [5i, 5i+5)°
+  std::size_t below_bound = 0;             ///< tetrahedra whose smallest dihedral < bound
+  double bound_deg = 0;
+};
+
+/// \pre every cell of m is a tetrahedron, m.point_dimension == 3
+TetrahedronQualityStatistics tetrahedron_quality(const Mesh& m, double bound_deg);
+/// AT's statistics from the templates (rigid maps keep dihedral angles and ratios).
+TetrahedronQualityStatistics tetrahedron_quality(const TemplatedMesh& t, double bound_deg);
+
 } // namespace symmesh::mesh

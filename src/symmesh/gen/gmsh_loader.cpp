@@ -1,0 +1,68 @@
+// Opens the Gmsh module on first use (spec/generation.md#gmsh, gmsh_mesher.h).
+#include "symmesh/gen/gmsh_mesher.h"
+#include "symmesh/gen/triangle_mesher.h"
+
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <system_error>
+
+namespace symmesh::gen {
+namespace {
+
+using Entry = int (*)(const PlanarRegions*, double, GmshTriangles*, std::string*);
+
+/// Next to the running executable (an installed or copied tree), then where it was built.
+std::vector<std::string> module_candidates() {
+  std::vector<std::string> out;
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) out.push_back((exe.parent_path() / "libsymmesh_gmsh.so").string());
+#ifdef SYMMESH_GMSH_MODULE_PATH
+  out.push_back(SYMMESH_GMSH_MODULE_PATH);
+#endif
+  return out;
+}
+
+Entry load_entry() {
+  static std::once_flag once;
+  static Entry entry = nullptr;
+  static std::string failure;
+  std::call_once(once, [] {
+    std::string tried;
+    for (const auto& path : module_candidates()) {
+      if (!std::filesystem::exists(path)) {
+        tried += (tried.empty() ? "" : ", ") + path;
+        continue;
+      }
+      // LOCAL: Gmsh's symbols (among them its own copy of TetGen's classes) stay out of the
+      // global scope, so libtet keeps binding to itself. (DEEPBIND would also keep Gmsh off
+      // libtet's copy, but it breaks libstdc++'s locale facets in the module: std::bad_cast.)
+      void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        failure = std::string("cannot load ") + path + ": " + dlerror();
+        return;
+      }
+      entry = reinterpret_cast<Entry>(dlsym(handle, "symmesh_mesh_with_gmsh"));
+      if (!entry) failure = path + ": no entry point symmesh_mesh_with_gmsh";
+      return;
+    }
+    failure = "libsymmesh_gmsh.so not found (looked at " + tried + ")";
+  });
+  if (!entry) throw MeshingError("Gmsh baseline unavailable: " + failure);
+  return entry;
+}
+
+} // namespace
+
+GmshTriangles mesh_with_gmsh(const PlanarRegions& regions, double size) {
+  const Entry entry = load_entry();
+  GmshTriangles out;
+  std::string error;
+  if (entry(&regions, size, &out, &error) != 0) throw MeshingError(error);
+  return out;
+}
+
+} // namespace symmesh::gen

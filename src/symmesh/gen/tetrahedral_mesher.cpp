@@ -1,0 +1,192 @@
+// TetGen with the boundary kept, checked afterwards (spec/generation.md#mesher-3).
+#include "symmesh/gen/tetrahedral_mesher.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <tetgen.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace symmesh::gen {
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+std::array<std::size_t, 3> sorted(std::array<std::size_t, 3> f) {
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+CGAL::Orientation orientation(const std::array<std::array<double, 3>, 4>& p) {
+  const auto pt = [&](int k) {
+    return K::Point_3(p[std::size_t(k)][0], p[std::size_t(k)][1], p[std::size_t(k)][2]);
+  };
+  return CGAL::orientation(pt(0), pt(1), pt(2), pt(3));
+}
+
+/// Swaps the last two vertices (c, d) of a negative tetrahedron x; a flat one is an error.
+template <class Index>
+void make_positive(const std::array<std::array<double, 3>, 4>& x, Index& c, Index& d,
+                   const char* flat) {
+  const auto o = orientation(x);
+  if (o == CGAL::ZERO) throw MeshingError(flat);
+  if (o == CGAL::NEGATIVE) std::swap(c, d);
+}
+
+/// Copies the surface into TetGen's input (arrays owned by tetgenio, freed by its destructor).
+void fill_input(const SurfaceInput& s, tetgenio& in) {
+  in.firstnumber = 0;
+  in.numberofpoints = int(s.points.size());
+  in.pointlist = new REAL[3 * s.points.size()];
+  for (std::size_t v = 0; v < s.points.size(); ++v)
+    for (int d = 0; d < 3; ++d) in.pointlist[3 * v + std::size_t(d)] = s.points[v][std::size_t(d)];
+  in.numberoffacets = int(s.triangles.size());
+  in.facetlist = new tetgenio::facet[s.triangles.size()];
+  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&facet.polygonlist[0]);
+    facet.polygonlist[0].numberofvertices = 3;
+    facet.polygonlist[0].vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k)
+      facet.polygonlist[0].vertexlist[k] = int(s.triangles[f][std::size_t(k)]);
+  }
+  if (!s.seeds.empty()) {
+    in.numberofregions = int(s.seeds.size());
+    in.regionlist = new REAL[5 * s.seeds.size()];
+    for (std::size_t r = 0; r < s.seeds.size(); ++r) {
+      for (int d = 0; d < 3; ++d)
+        in.regionlist[5 * r + std::size_t(d)] = s.seeds[r].point[std::size_t(d)];
+      in.regionlist[5 * r + 3] = s.seeds[r].region;
+      in.regionlist[5 * r + 4] = -1; // no region-specific volume bound
+    }
+  }
+}
+
+void check_input(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
+  if (!(p.size > 0) || !std::isfinite(p.size))
+    throw std::invalid_argument("mesh size must be a positive number");
+  if (!(p.radius_edge >= 1) || !std::isfinite(p.radius_edge))
+    throw std::invalid_argument("radius-edge bound must be at least 1");
+  std::set<std::array<double, 3>> seen;
+  for (const auto& q : s.points) {
+    if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      throw MeshingError("a boundary point is not finite");
+    if (!seen.insert(q).second) throw MeshingError("two boundary points coincide");
+  }
+  for (const auto& t : s.triangles)
+    for (std::size_t v : t)
+      if (v >= s.points.size()) throw MeshingError("a boundary triangle names a missing point");
+}
+} // namespace
+
+double volume_bound(double size) {
+  return size * size * size / (6 * std::sqrt(2.0));
+}
+
+std::string tetgen_switches(const TetrahedralMeshingParameters& p, bool with_regions) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "pYq%.6ga%.6g%szQ", p.radius_edge, volume_bound(p.size),
+                with_regions ? "A" : "");
+  return buf;
+}
+
+TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
+  check_input(s, p);
+  tetgenio in, out;
+  fill_input(s, in);
+  std::string switches = tetgen_switches(p, !s.seeds.empty());
+  try {
+    tetrahedralize(switches.data(), &in, &out);
+  } catch (int code) {
+    throw MeshingError("TetGen failed (code " + std::to_string(code) +
+                       "): the surface is not a valid closed PLC or cannot be kept");
+  }
+  TetrahedralMeshOutput m;
+  if (out.numberofpoints < in.numberofpoints || out.numberofcorners != 4)
+    throw MeshingError("TetGen dropped input points");
+  for (int v = 0; v < out.numberofpoints; ++v)
+    m.points.push_back({out.pointlist[3 * v], out.pointlist[3 * v + 1], out.pointlist[3 * v + 2]});
+  for (std::size_t v = 0; v < s.points.size(); ++v)
+    if (m.points[v] != s.points[v]) throw MeshingError("TetGen moved or reordered input points");
+  const bool with_regions = !s.seeds.empty() && out.numberoftetrahedronattributes > 0;
+  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+    std::array<std::size_t, 4> tet{};
+    for (int k = 0; k < 4; ++k) tet[std::size_t(k)] = std::size_t(out.tetrahedronlist[4 * t + k]);
+    std::array<std::array<double, 3>, 4> x{};
+    for (int k = 0; k < 4; ++k) x[std::size_t(k)] = m.points[tet[std::size_t(k)]];
+    make_positive(x, tet[2], tet[3], "TetGen made a flat tetrahedron");
+    m.tetrahedra.push_back(tet);
+    m.region.push_back(
+        with_regions
+            ? int(out.tetrahedronattributelist[std::size_t(t) *
+                                               std::size_t(out.numberoftetrahedronattributes)])
+            : 0);
+  }
+  if (const auto f = boundary_mismatch(s, m)) {
+    std::ostringstream why;
+    if (*f < s.triangles.size())
+      why << "TetGen changed the boundary: input triangle " << *f << " (" << s.triangles[*f][0]
+          << ", " << s.triangles[*f][1] << ", " << s.triangles[*f][2]
+          << ") is not a face of the mesh (split or lost)";
+    else
+      why << "TetGen changed the boundary: the mesh has a boundary face that is no input "
+             "triangle (a Steiner point on the boundary)";
+    throw MeshingError(why.str());
+  }
+  return m;
+}
+
+std::optional<std::size_t> boundary_mismatch(const SurfaceInput& s,
+                                             const TetrahedralMeshOutput& m) {
+  struct Use {
+    int count = 0, region = 0;
+    bool two_regions = false;
+  };
+  std::map<std::array<std::size_t, 3>, Use> faces;
+  for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+    const auto& c = m.tetrahedra[t];
+    const int r = t < m.region.size() ? m.region[t] : 0;
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<std::size_t, 3> f{};
+      for (int k = 0, j = 0; k < 4; ++k)
+        if (k != skip) f[std::size_t(j++)] = c[std::size_t(k)];
+      auto& u = faces[sorted(f)];
+      if (u.count++ == 0)
+        u.region = r;
+      else if (u.region != r)
+        u.two_regions = true;
+    }
+  }
+  std::set<std::array<std::size_t, 3>> input;
+  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+    const auto key = sorted(s.triangles[f]);
+    input.insert(key);
+    const auto it = faces.find(key);
+    if (it == faces.end()) return f;
+    // An input triangle inside one region (a double-sided inner facet) is kept too.
+  }
+  for (const auto& [f, u] : faces)
+    if ((u.count == 1 || u.two_regions) && !input.count(f)) return s.triangles.size();
+  return std::nullopt;
+}
+
+void orient_tetrahedra_positively(mesh::Mesh& m) {
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.cell_types[c] != mesh::ElementType::tetrahedron) continue;
+    auto* v = m.cell_vertex_indices.data() + m.cell_vertex_index_offsets[c];
+    std::array<std::array<double, 3>, 4> x{};
+    for (int k = 0; k < 4; ++k) {
+      const double* p = m.vertex(std::size_t(v[k]));
+      x[std::size_t(k)] = {p[0], p[1], p[2]};
+    }
+    make_positive(x, v[2], v[3], "a tetrahedron of the mesh is flat");
+  }
+}
+
+} // namespace symmesh::gen
