@@ -2,6 +2,7 @@
 //                  [--max-cells N] -o OUT.{vtu,msh,mesh} [--ascii] [--compress]
 //                  [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/apps/commands.h"
+#include "symmesh/gen/templated_tetrahedral_mesh.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/io/mesh_writers.h"
@@ -60,8 +61,8 @@ std::size_t peak_rss_bytes() {
   return std::size_t(u.ru_maxrss) * 1024;
 }
 
-template <class FT>
-gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const GenerateOptions& o,
+template <class FT, int D>
+gen::GenerationResult run_method(const core::TemplatedStructure<FT, D>& x, const GenerateOptions& o,
                                  const gen::GenerationOptions& g) {
   const std::map<std::string, gen::Method> methods{{"auto", gen::Method::automatic},
                                                    {"bpp", gen::Method::bpp},
@@ -72,7 +73,10 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, 2>& x, const
                                                    {"gmsh", gen::Method::gmsh},
                                                    {"sao", gen::Method::sao}};
   const auto method = methods.at(o.method);
-  return gen::generate_triangle_mesh(x, method, g);
+  if constexpr (D == 2)
+    return gen::generate_triangle_mesh(x, method, g);
+  else
+    return gen::generate_tetrahedral_mesh(x, method, g);
 }
 
 struct InfeasibleSize : std::runtime_error {
@@ -80,18 +84,39 @@ struct InfeasibleSize : std::runtime_error {
 };
 
 /// Refuses, before any work, a --size that would give more cells than --max-cells.
-void refuse_infeasible_size(const gen::CellEstimate& e, const GenerateOptions& o) {
+/// In 3D the estimate's `area` is the volume and `triangles` the tetrahedra.
+void refuse_infeasible_size(const gen::CellEstimate& e, const GenerateOptions& o, int dimension) {
   const bool by_default = o.max_cells == 0;
   const double limit = by_default ? default_max_cells() : o.max_cells;
   if (e.triangles <= limit) return;
   throw InfeasibleSize(
       "--size " + round_text(o.size) + ": the structure instance would have about " +
-      round_text(e.triangles) + " triangles (area " + round_text(e.area) +
-      " at about 0.2·size² per triangle), above the limit of " + round_text(limit) +
+      round_text(e.triangles) +
+      (dimension == 2
+           ? " triangles (area " + round_text(e.area) + " at about 0.2·size² per triangle)"
+           : " tetrahedra (volume " + round_text(e.area) + " at about 2 per size³/(6√2))") +
+      ", above the limit of " + round_text(limit) +
       (by_default
            ? " (" + round_text(physical_memory_bytes() / double(1ull << 30)) + " GiB of memory / " +
                  round_text(kBytesPerCell) + " bytes per cell; raise it with --max-cells)"
            : " (--max-cells)"));
+}
+
+/// Tetrahedron quality of AT from the templates (Table 7.1's measures): dihedral angles,
+/// radius-edge ratio, and the tetrahedra whose smallest dihedral angle is below 10°.
+nlohmann::ordered_json tetrahedron_quality_json(const mesh::TemplatedMesh& t) {
+  constexpr double kDihedralBoundDeg = 10;
+  const auto q = mesh::tetrahedron_quality(t, kDihedralBoundDeg);
+  nlohmann::ordered_json j;
+  j["tetrahedra"] = q.tetrahedra;
+  j["min_dihedral_deg"] = q.min_dihedral_deg;
+  j["max_dihedral_deg"] = q.max_dihedral_deg;
+  j["max_radius_edge_ratio"] = q.max_radius_edge_ratio;
+  j["dihedral_bound_deg"] = kDihedralBoundDeg;
+  j["below_dihedral_bound"] = q.below_bound;
+  j["min_dihedral_histogram_bin_deg"] = 5;
+  j["min_dihedral_histogram"] = q.histogram;
+  return j;
 }
 
 /// MRMESH bytes of AT (Listing 2.2) from its counts: the arrays as mesh::MrMesh::bytes() counts
@@ -155,13 +180,11 @@ int run_generate(const GenerateOptions& o) {
     r = std::visit(
         [&](const auto& s) -> gen::GenerationResult {
           using S = std::decay_t<decltype(s)>;
-          if constexpr (std::is_same_v<S, io::Structure2> ||
-                        std::is_same_v<S, io::CyclotomicStructure2>) {
-            refuse_infeasible_size(gen::estimate_cells(s, o.size), o);
-            return run_method(s, o, g);
-          } else {
-            throw std::invalid_argument("generate: 3D templated geometries are not supported yet");
-          }
+          constexpr int dimension =
+              std::is_same_v<S, io::Structure2> || std::is_same_v<S, io::CyclotomicStructure2> ? 2
+                                                                                               : 3;
+          refuse_infeasible_size(gen::estimate_cells(s, o.size), o, dimension);
+          return run_method(s, o, g);
         },
         x);
   } catch (const InfeasibleSize& e) {
@@ -229,24 +252,29 @@ int run_generate(const GenerateOptions& o) {
                                 {"lemma_4_2_certificate", f.certificate}};
   j["seconds_write"] = write_seconds;
   j["peak_rss_bytes"] = peak_rss_bytes();
-  const auto q = mesh::triangle_quality(r.templated.templated, o.min_angle);
-  j["min_angle_deg"] = q.min_angle_deg;
-  j["quality"] = {{"triangles", q.triangles},
-                  {"min_angle_deg", q.min_angle_deg},
-                  {"max_radius_edge_ratio", q.max_radius_edge_ratio},
-                  {"below_min_angle", q.below_bound},
-                  {"min_angle_histogram_bin_deg", 5},
-                  {"min_angle_histogram", q.histogram}};
+  const bool volumetric = r.templated.templated.point_dimension == 3;
+  if (!volumetric) {
+    const auto q = mesh::triangle_quality(r.templated.templated, o.min_angle);
+    j["min_angle_deg"] = q.min_angle_deg;
+    j["quality"] = {{"triangles", q.triangles},
+                    {"min_angle_deg", q.min_angle_deg},
+                    {"max_radius_edge_ratio", q.max_radius_edge_ratio},
+                    {"below_min_angle", q.below_bound},
+                    {"min_angle_histogram_bin_deg", 5},
+                    {"min_angle_histogram", q.histogram}};
+  } else {
+    j["quality"] = tetrahedron_quality_json(r.templated.templated);
+  }
   j["lemma_4_2_holds"] = r.lemma_4_2_holds;
   if (!o.report.empty()) {
     std::ofstream os(o.report);
     os << j.dump(2) << "\n";
   }
   if (progress)
-    progress->message(std::to_string(at.cell_count()) + " triangles in " +
-                      std::to_string(r.templated.templated.instance_count()) + " instances of " +
-                      std::to_string(r.templated.templated.templates.size()) +
-                      " templates, written to " + o.out);
+    progress->message(
+        std::to_string(at.cell_count()) + (volumetric ? " tetrahedra in " : " triangles in ") +
+        std::to_string(r.templated.templated.instance_count()) + " instances of " +
+        std::to_string(r.templated.templated.templates.size()) + " templates, written to " + o.out);
   return ok;
 }
 } // namespace
@@ -254,8 +282,9 @@ int run_generate(const GenerateOptions& o) {
 void add_generate(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<GenerateOptions>();
   auto* cmd = app.add_subcommand(
-      "generate", "Generate a 2D templated triangle mesh of a templated geometry (Algorithm 5.6 "
-                  "over the boundary patch partition) or a conventional baseline, certify it "
+      "generate", "Generate a templated mesh of a templated geometry -- triangles in 2D (Algorithm "
+                  "5.6), tetrahedra by TetGen in 3D (Algorithm 5.7), over the boundary patch "
+                  "partition -- or a conventional baseline, certify it "
                   "with Lemma 4.2 and write the structure instance. Exit 0: written; 1: the "
                   "certificate failed (nothing written); 2: bad input.");
   cmd->add_option("file", o->file, "templated-geometry JSON (spec/input-format.md)")->required();

@@ -4,7 +4,10 @@
 
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/line_mesh_conformity.h"
+#include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/gmsh_mesher.h"
+#include "symmesh/gen/region_templates.h"
+#include "symmesh/gen/shared_vertex_bookkeeping.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/mesh/union_find.h"
 #include "symmesh/number/cyclotomic_cgal.h"
@@ -29,39 +32,14 @@
 
 namespace symmesh::gen {
 namespace {
-using Clock = std::chrono::steady_clock;
-using LazyCyclotomic = CGAL::Lazy_exact_nt<number::Cyclotomic>;
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-long minor_faults() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_minflt;
-}
-
-template <class FT>
-FT exact_from_double(double v) {
-  const mpq_class q(v); // exact: every finite double is a dyadic rational
-  if constexpr (std::is_same_v<FT, Exact>)
-    return FT(q);
-  else
-    return FT(number::Cyclotomic(q));
-}
-
-/// v within 4 units in the last place: the midpoint of its certified interval when that is so
-/// narrow, else the double nearest to its exact value. (CGAL's to_double of a lazy number
-/// returns the midpoint as soon as the interval is within 1e-5 relative, which left K_128 output
-/// vertices 1e-7 off.)
-template <class FT>
-double rounded(const FT& v) {
-  const auto [lo, hi] = CGAL::to_interval(v);
-  if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
-    return lo + (hi - lo) / 2;
-  return CGAL::to_double(CGAL::exact(v));
-}
+using support::Clock;
+using support::exact_from_double;
+using support::LazyCyclotomic;
+using support::minor_faults;
+using support::rounded;
+using support::seconds_since;
+using support::SvbCandidate;
+using support::SvbPairs;
 
 /// Triangles Mesh_2 makes per size² of area (spec/generation.md#cell-estimate).
 constexpr double kTriangleAreaPerSize2 = 0.2;
@@ -81,23 +59,8 @@ FT carrier_area(const core::ElementComplex<FT, 2>& c) {
   return twice / FT(2);
 }
 
-/// The line mesh of one edge face [a, b] (subdivision point ids): N parts; interior points get
-/// local ids first .. first+N-2.
-struct FaceLine {
-  std::size_t a = 0, b = 0, n = 0, first = 0; ///< n = 0: a vertex face
-};
-
-template <class FT>
-std::size_t parts_for(const core::Point<FT, 2>& a, const core::Point<FT, 2>& b, const FT& h2,
-                      double h) {
-  const FT l2 = core::dot<FT, 2>(b - a, b - a);
-  // A double guess, then the exact smallest N >= 1 with N²h² >= |b - a|².
-  const double guess = std::ceil(std::sqrt(CGAL::to_double(l2)) / h);
-  std::size_t n = std::max<std::size_t>(1, std::size_t(std::max(1.0, guess)));
-  while (n > 1 && exact_from_double<FT>(double(n - 1) * double(n - 1)) * h2 >= l2) --n;
-  while (exact_from_double<FT>(double(n) * double(n)) * h2 < l2) ++n;
-  return n;
-}
+using support::FaceLine;
+using support::parts_for;
 
 /// Template t's boundary: the subdivision points (exact), and per edge face its line mesh, whose
 /// k-th point is exactly a + (k/N)(b − a) (core::line_mesh_point); the mesher gets the points in
@@ -138,7 +101,7 @@ TemplateBoundary<FT> line_meshes(const core::BoundarySubdivision<FT, 2>& sd, con
     FaceLine& line = tb.lines[f];
     line.a = face.vertices[0];
     line.b = face.vertices[1];
-    line.n = parts ? (*parts)[f] : parts_for<FT>(sd.points[line.a], sd.points[line.b], h2, h);
+    line.n = parts ? (*parts)[f] : parts_for<FT, 2>(sd.points[line.a], sd.points[line.b], h2, h);
     line.first = tb.input.points.size();
     const auto a = tb.input.points[line.a], b = tb.input.points[line.b];
     std::size_t prev = line.a;
@@ -191,124 +154,6 @@ mapping_pairs(const core::BoundaryPatchPartition<FT, 2>& bpp, std::size_t letter
   }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
-}
-
-mesh::Transformation to_double_transformation(const auto& t) {
-  mesh::Transformation out;
-  for (int r = 0; r < 2; ++r) {
-    for (int c = 0; c < 2; ++c) out.matrix.push_back(rounded(t.matrix()[r][c]));
-    out.translation.push_back(rounded(t.translation_part()[r]));
-  }
-  return out;
-}
-
-/// One candidate of the SVB: the instance pair (from, to) and its identified template vertices.
-using SvbPairs = std::vector<std::pair<mesh::IndexType, mesh::IndexType>>;
-/// The copies of one mapping share one pair list (a rotational mapping stands for n pairs).
-struct SvbCandidate {
-  core::InstanceId from, to;
-  std::shared_ptr<const SvbPairs> pairs;
-};
-
-/// The BPP's mappings between distinct instances, one direction each (the inverse is a mapping
-/// too). `rotations` > 0 (the rotational method): the BPP was computed on the first two rotated
-/// copies only, and every mapping from copy a to copy b stands for all pairs (k, k + b - a mod n).
-/// `copies` > 0 (reflective/combined): the BPP was computed on copy 0 only, and every mapping
-/// from (i,0) to (j,0) stands for all pairs ((i,k), (j,k)).
-template <class FT>
-std::vector<SvbCandidate> svb_candidates(const core::TemplatedStructure<FT, 2>& x,
-                                         const core::BoundaryPatchPartition<FT, 2>& bpp,
-                                         const std::vector<TemplateBoundary<FT>>& boundaries,
-                                         std::size_t rotations, std::size_t copies = 0) {
-  std::vector<std::size_t> instance_offset;
-  std::size_t instances = 0;
-  for (const auto& list : x.instances) {
-    instance_offset.push_back(instances);
-    instances += list.size();
-  }
-  const auto global = [&](core::InstanceId id) { return instance_offset[id.i] + id.g; };
-  std::vector<SvbCandidate> out;
-  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
-    const auto& m = bpp.mappings[l];
-    if (m.whole_boundary) continue;
-    if (copies > 0) {
-      const auto pairs = std::make_shared<const SvbPairs>(mapping_pairs(bpp, l, boundaries));
-      for (std::size_t k = 0; k < copies; ++k) {
-        const core::InstanceId from{m.from.i, k}, to{m.to.i, k};
-        if (global(from) < global(to)) out.push_back({from, to, pairs});
-      }
-      continue;
-    }
-    if (rotations == 0) {
-      if (global(m.from) < global(m.to))
-        out.push_back(
-            {m.from, m.to, std::make_shared<const SvbPairs>(mapping_pairs(bpp, l, boundaries))});
-      continue;
-    }
-    const auto pairs = std::make_shared<const SvbPairs>(mapping_pairs(bpp, l, boundaries));
-    const std::size_t n = rotations, shift = (m.to.g + n - m.from.g) % n;
-    for (std::size_t k = 0; k < n; ++k) {
-      const core::InstanceId from{m.from.i, k}, to{m.to.i, (k + shift) % n};
-      if (global(from) < global(to)) out.push_back({from, to, pairs});
-    }
-  }
-  return out;
-}
-
-/// Compact SVB: one table per distinct set of pairs, and a spanning set of instance pairs. The
-/// union-find runs over the boundary vertices only (the mesher numbers the line-mesh points
-/// first, and only they are ever identified), so its size is the boundary size, not the cell
-/// count.
-template <class FT>
-void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, 2>& x,
-                               const std::vector<TemplateBoundary<FT>>& boundaries,
-                               std::vector<SvbCandidate> candidates,
-                               mesh::TemplatedMeshCompactSvb& out) {
-  std::vector<std::size_t> instance_offset, vertex_offset;
-  std::size_t instances = 0, vertices = 0;
-  for (std::size_t i = 0; i < x.templates.size(); ++i) {
-    instance_offset.push_back(instances);
-    vertex_offset.push_back(vertices);
-    instances += x.instances[i].size();
-    vertices += x.instances[i].size() * boundaries[i].input.points.size();
-  }
-  const auto global_instance = [&](core::InstanceId id) { return instance_offset[id.i] + id.g; };
-  const auto first_vertex = [&](core::InstanceId id) {
-    return vertex_offset[id.i] + id.g * boundaries[id.i].input.points.size();
-  };
-  // Interfaces with many identified vertices first, so point contacts implied by them drop out.
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const SvbCandidate& a, const SvbCandidate& b) {
-                     return a.pairs->size() > b.pairs->size();
-                   });
-  mesh::UnionFind uf(vertices);
-  // Tables are deduplicated by content; the copies of one mapping share their list, so the
-  // content is compared once per list, not once per instance pair.
-  std::map<std::tuple<std::size_t, std::size_t, SvbPairs>, std::size_t> table_of;
-  std::map<std::tuple<std::size_t, std::size_t, const SvbPairs*>, std::size_t> table_of_list;
-  for (const auto& c : candidates) {
-    bool adds = false;
-    for (auto [a, b] : *c.pairs) {
-      if (std::size_t(a) >= boundaries[c.from.i].input.points.size() ||
-          std::size_t(b) >= boundaries[c.to.i].input.points.size())
-        throw std::logic_error("SVB: an identified vertex is not a boundary vertex");
-      adds = uf.unite(first_vertex(c.from) + std::size_t(a), first_vertex(c.to) + std::size_t(b)) ||
-             adds;
-    }
-    if (!adds) continue;
-    auto [by_list, fresh] =
-        table_of_list.emplace(std::make_tuple(c.from.i, c.to.i, c.pairs.get()), 0);
-    if (fresh) {
-      auto [it, inserted] =
-          table_of.emplace(std::make_tuple(c.from.i, c.to.i, *c.pairs), out.tables.size());
-      if (inserted)
-        out.tables.push_back({mesh::IndexType(c.from.i), mesh::IndexType(c.to.i), *c.pairs});
-      by_list->second = it->second;
-    }
-    out.identifications.push_back({mesh::IndexType(global_instance(c.from)),
-                                   mesh::IndexType(global_instance(c.to)),
-                                   mesh::IndexType(by_list->second)});
-  }
 }
 
 /// The common case of rotation_order, decided without products: every T_{i,k} is exactly the
@@ -440,31 +285,6 @@ symmetry_copies(const core::TemplatedStructure<FT, 2>& x, Symmetry kind) {
   if (!reflection) fail("no copy is a reflection");
   if (kind == Symmetry::combined && !long_rotation) fail("no copy is a rotation of order >= 3");
   return copies;
-}
-
-/// The SVB candidates of the copies of one template: vertex p of copy k is vertex q of copy l
-/// when T_{i,l}^-1 ∘ T_{i,k} sends p to q (exact, over the template's exact boundary points). On
-/// a mirror the relative map is the reflection that fixes the mirror pointwise (Lemma 6.1).
-template <class FT>
-void copy_candidates(const core::TemplatedStructure<FT, 2>& x,
-                     const std::vector<TemplateBoundary<FT>>& boundaries,
-                     std::vector<SvbCandidate>& out) {
-  for (std::size_t i = 0; i < x.templates.size(); ++i) {
-    const auto pts = all_exact_points(boundaries[i]);
-    std::map<core::Point<FT, 2>, std::size_t, core::PointLess<FT, 2>> local;
-    for (std::size_t v = 0; v < pts.size(); ++v) local.emplace(pts[v], v);
-    const auto& list = x.instances[i];
-    for (std::size_t k = 0; k < list.size(); ++k)
-      for (std::size_t l = k + 1; l < list.size(); ++l) {
-        const auto m = list[l].transformation.inverse() * list[k].transformation;
-        SvbPairs pairs;
-        for (std::size_t v = 0; v < pts.size(); ++v)
-          if (const auto it = local.find(m(pts[v])); it != local.end())
-            pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(it->second));
-        if (!pairs.empty())
-          out.push_back({{i, k}, {i, l}, std::make_shared<const SvbPairs>(std::move(pairs))});
-      }
-  }
 }
 
 /// The mesh template's boundary edges (edges of exactly one triangle) are exactly the line
@@ -786,7 +606,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     for (const auto& inst : x.instances[i]) {
       t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
       t.region_ids.push_back(mesh::RegionIdType(inst.region));
-      tm.transformations.push_back(to_double_transformation(inst.transformation));
+      tm.transformations.push_back(support::to_double_transformation<2>(inst.transformation));
     }
     say("template " + std::to_string(i + 1) + "/" + std::to_string(x.templates.size()) + " ('" +
         x.templates[i].name + "'): " + std::to_string(t.mesh.cell_count()) + " triangles");
@@ -798,9 +618,17 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   stage("shared vertex bookkeeping", 0, "");
   t0 = Clock::now();
   f0 = minor_faults();
-  auto candidates = svb_candidates(x, bpp, boundaries, rotations, copies);
-  if (group) copy_candidates(x, boundaries, candidates);
-  shared_vertex_bookkeeping(x, boundaries, std::move(candidates), r.templated);
+  auto candidates = support::svb_candidates<FT, 2>(
+      x, bpp, [&](std::size_t l) { return mapping_pairs(bpp, l, boundaries); }, rotations, copies);
+  std::vector<std::size_t> boundary_vertices;
+  for (const auto& b : boundaries) boundary_vertices.push_back(b.input.points.size());
+  if (group) {
+    std::vector<std::vector<core::Point<FT, 2>>> points;
+    for (const auto& b : boundaries) points.push_back(all_exact_points(b));
+    support::copy_candidates<FT, 2>(x, points, candidates);
+  }
+  support::shared_vertex_bookkeeping<FT, 2>(x, boundary_vertices, std::move(candidates),
+                                            r.templated);
   r.timings.svb = seconds_since(t0);
   faults.svb = minor_faults() - f0;
 
@@ -819,35 +647,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   return r;
 }
 
-/// The conventional input: per region, the union of its instances (AT restricted to the region)
-/// as one geometry template instanced once, so that region boundaries stay mesh edges.
-template <class FT>
-core::TemplatedStructure<FT, 2> as_region_templates(const core::TemplatedStructure<FT, 2>& x) {
-  if (const auto overlap = core::find_instance_overlap(x))
-    throw std::invalid_argument(core::overlap_message(*overlap));
-  std::map<int, core::TemplatedStructure<FT, 2>> by_region;
-  for (std::size_t i = 0; i < x.templates.size(); ++i)
-    for (const auto& inst : x.instances[i]) {
-      auto& part = by_region[inst.region];
-      std::size_t k = 0;
-      while (k < part.templates.size() && part.templates[k].name != x.templates[i].name) ++k;
-      if (k == part.templates.size()) {
-        part.templates.push_back(x.templates[i]);
-        part.instances.emplace_back();
-      }
-      part.instances[k].push_back(inst);
-    }
-  core::TemplatedStructure<FT, 2> whole;
-  for (const auto& [region, part] : by_region) {
-    const auto si = core::apply_template(part);
-    whole.templates.push_back(
-        {"region " + std::to_string(region), core::TemplateKind::geometry, si.at.mesh});
-    core::InstanceSpec<FT, 2> spec;
-    spec.region = region;
-    whole.instances.push_back({spec});
-  }
-  return whole;
-}
+using support::as_region_templates;
 
 /// The Gmsh peer (spec/generation.md#gmsh): the regions of AT (exact, merged by exact point
 /// equality) rounded once and meshed by Gmsh as a whole; one template per region, instanced

@@ -30,6 +30,14 @@ struct GenerationOptions {
   double min_angle_deg = 20;
   /// Progress lines (stage, counts, elapsed seconds); nullptr = quiet.
   mesh::Progress* progress = nullptr;
+  /// Fault injection for tests (3D): after the surface meshes are carried to every face of their
+  /// class, move one interior vertex of one interface face a little within its plane (exactly),
+  /// so that its instances no longer conform and the Lemma 4.2 certificate must fail.
+  bool perturb_one_surface_mesh = false;
+  /// 3D: certify with the general Lemma 4.2 checker on the exact boundary complexes (every pair
+  /// of neighbouring instances, condition (i) by a sweep) instead of mapping by mapping; slower,
+  /// the independent check the tests compare with (spec/lemmas.md#lemma-4-2-surface-meshes).
+  bool direct_certificate = false;
 };
 
 struct GenerationTimings {

@@ -1,0 +1,592 @@
+// Algorithm 5.7 (spec/generation.md#alg-5-7). Instantiated for the rationals (Epeck's FT) and for
+// K_m through Lazy_exact_nt<Cyclotomic>, like the 2D path. The stages it shares with
+// Algorithm 5.6 (the BPP, uniform line meshes, the SVB, the conventional input, rounding) come
+// from the same headers; only the surface meshes and the mesher are 3D.
+#include "symmesh/gen/templated_tetrahedral_mesh.h"
+
+#include "symmesh/core/boundary_patch_partition.h"
+#include "symmesh/core/interface_conformity.h"
+#include "symmesh/gen/generation_support.h"
+#include "symmesh/gen/region_templates.h"
+#include "symmesh/gen/shared_vertex_bookkeeping.h"
+#include "symmesh/gen/tetrahedral_mesher.h"
+#include "symmesh/gen/triangle_mesher.h"
+#include "symmesh/number/cyclotomic_cgal.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace symmesh::gen {
+namespace {
+using support::Clock;
+using support::exact_from_double;
+using support::FaceLine;
+using support::LazyCyclotomic;
+using support::minor_faults;
+using support::rounded;
+using support::seconds_since;
+using support::SvbPairs;
+
+template <class FT>
+using P3 = core::Point<FT, 3>;
+
+template <class FT>
+P3<FT> cross(const P3<FT>& a, const P3<FT>& b) {
+  P3<FT> c;
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+  return c;
+}
+
+/// The k-th of the n + 1 points of the uniform line mesh of [a, b], exactly.
+template <class FT>
+P3<FT> line_point(const P3<FT>& a, const P3<FT>& b, std::size_t k, std::size_t n) {
+  if (k == 0) return a;
+  if (k == n) return b;
+  return a + core::scaled<FT, 3>(b - a, FT(int(k)) / FT(int(n)));
+}
+
+/// Tetrahedra TetGen makes per volume bound (-a) of volume, at the default radius-edge bound:
+/// measured on the cube examples (spec/generation.md#cell-estimate).
+constexpr double kTetrahedraPerVolumeBound = 2.0;
+
+/// Template t's boundary mesh: every boundary point exactly in local ids (subdivision points,
+/// then the interior points of each line mesh, then those of each surface mesh), the line mesh
+/// of every edge face and the triangles of the surface meshes of the 2-faces. TetGen gets the
+/// points rounded once from their exact values; conformity never depends on the rounding, the
+/// SVB identifies points by index.
+template <class FT>
+struct SurfaceBoundary {
+  std::vector<P3<FT>> exact;
+  std::vector<FaceLine> lines;                       ///< per subdivision face (n = 0: not an edge)
+  std::vector<std::size_t> facet_first, facet_count; ///< per subdivision face: interior points
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::size_t> triangle_face;                      ///< the 2-face each triangle lies in
+  std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>> id_of; ///< vertices and line points
+};
+
+template <class FT>
+SurfaceBoundary<FT> line_meshes_3(const core::BoundarySubdivision<FT, 3>& sd, const FT& h2,
+                                  double h) {
+  SurfaceBoundary<FT> tb;
+  tb.exact = sd.points;
+  for (std::size_t v = 0; v < tb.exact.size(); ++v) tb.id_of.emplace(tb.exact[v], v);
+  tb.lines.resize(sd.faces.size());
+  tb.facet_first.assign(sd.faces.size(), 0);
+  tb.facet_count.assign(sd.faces.size(), 0);
+  for (std::size_t f = 0; f < sd.faces.size(); ++f) {
+    const auto& face = sd.faces[f];
+    if (face.dimension != 1) continue;
+    FaceLine& line = tb.lines[f];
+    line.a = face.vertices[0];
+    line.b = face.vertices[1];
+    line.n = support::parts_for<FT, 3>(sd.points[line.a], sd.points[line.b], h2, h);
+    line.first = tb.exact.size();
+    for (std::size_t k = 1; k < line.n; ++k) {
+      tb.exact.push_back(line_point<FT>(sd.points[line.a], sd.points[line.b], k, line.n));
+      tb.id_of.emplace(tb.exact.back(), tb.exact.size() - 1);
+    }
+  }
+  return tb;
+}
+
+/// The local ids of the line-mesh points of edge face e, from a to b.
+std::vector<std::size_t> line_ids(const FaceLine& line) {
+  std::vector<std::size_t> out{line.a};
+  for (std::size_t k = 1; k < line.n; ++k) out.push_back(line.first + k - 1);
+  out.push_back(line.b);
+  return out;
+}
+
+/// The triangulation of one 2-face in its own plane, conforming to the line meshes of its
+/// closure: boundary points as local ids of the face's template, interior points exactly (they
+/// lie in the face's plane exactly: p0 + s·u + t·v with rational s, t), triangles over
+/// (boundary ids, then interior points).
+template <class FT>
+struct FacetMesh {
+  std::vector<std::size_t> boundary_ids;
+  std::vector<P3<FT>> interior;
+  std::vector<std::array<std::size_t, 3>> triangles; ///< < boundary_ids.size(): boundary
+};
+
+template <class FT>
+FacetMesh<FT> mesh_facet(const core::BoundarySubdivision<FT, 3>& sd, const SurfaceBoundary<FT>& tb,
+                         std::size_t f, double size, double min_angle_deg) {
+  const auto& face = sd.faces[f];
+  FacetMesh<FT> out;
+  BoundaryInput in;
+  std::map<std::size_t, std::size_t> local; // template boundary id -> input point
+  const auto point = [&](std::size_t id) {
+    auto [it, fresh] = local.emplace(id, out.boundary_ids.size());
+    if (fresh) out.boundary_ids.push_back(id);
+    return it->second;
+  };
+  for (std::size_t c : face.closure) {
+    const auto& cf = sd.faces[c];
+    if (cf.dimension == 0) point(cf.vertices[0]);
+    if (cf.dimension != 1) continue;
+    const auto ids = line_ids(tb.lines[c]);
+    for (std::size_t k = 0; k + 1 < ids.size(); ++k)
+      in.segments.push_back({point(ids[k]), point(ids[k + 1])});
+  }
+  // An exact orthogonal frame of the face's plane: u along a piece edge, v = n × u in the plane.
+  const auto& piece = face.pieces.at(0);
+  const P3<FT> p0 = sd.points[piece.v[0]];
+  const P3<FT> u = sd.points[piece.v[1]] - p0;
+  const P3<FT> v = cross<FT>(cross<FT>(u, sd.points[piece.v[2]] - p0), u);
+  const double lu = std::sqrt(rounded(core::dot<FT, 3>(u, u)));
+  const double lv = std::sqrt(rounded(core::dot<FT, 3>(v, v)));
+  for (std::size_t id : out.boundary_ids) {
+    const P3<FT> d = tb.exact[id] - p0;
+    in.points.push_back(
+        {rounded(core::dot<FT, 3>(d, u)) / lu, rounded(core::dot<FT, 3>(d, v)) / lv});
+  }
+  MeshingParameters p;
+  p.size = size;
+  p.min_angle_deg = min_angle_deg;
+  const auto m = mesh_domain_2(in, p);
+  for (std::size_t k = in.points.size(); k < m.points.size(); ++k) {
+    const FT s = exact_from_double<FT>(m.points[k][0] / lu);
+    const FT t = exact_from_double<FT>(m.points[k][1] / lv);
+    out.interior.push_back(p0 + core::scaled<FT, 3>(u, s) + core::scaled<FT, 3>(v, t));
+  }
+  out.triangles = m.triangles;
+  return out;
+}
+
+/// Surface meshes of all 2-faces (spec/generation.md#surface-meshes): the classes of 2-faces
+/// under the face-to-face action of the mappings, each meshed once at its first face and carried
+/// to the others by the composition of mappings along a BFS tree. Every mapping between two
+/// faces of a class must agree with the tree's compositions on the face (else the face would
+/// need a surface mesh symmetric under the difference, which is not implemented: refused).
+template <class FT>
+void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
+                    const core::BoundaryPatchPartition<FT, 3>& bpp,
+                    std::vector<SurfaceBoundary<FT>>& boundaries, double size,
+                    double min_angle_deg) {
+  using Map = core::RigidTransformation<FT, 3>;
+  const auto& sds = bpp.subdivisions;
+  std::vector<std::vector<std::vector<std::pair<std::size_t, core::FaceRef>>>> arrows(sds.size());
+  for (std::size_t t = 0; t < sds.size(); ++t) arrows[t].resize(sds[t].faces.size());
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    for (auto [f, g] : bpp.letter_action[l])
+      if (sds[m.from_template()].faces[f].dimension == 2)
+        arrows[m.from_template()][f].push_back({l, core::FaceRef{m.to_template(), g}});
+  }
+  std::vector<std::vector<bool>> done(sds.size());
+  for (std::size_t t = 0; t < sds.size(); ++t) done[t].assign(sds[t].faces.size(), false);
+  for (std::size_t t = 0; t < sds.size(); ++t)
+    for (std::size_t f = 0; f < sds[t].faces.size(); ++f) {
+      if (sds[t].faces[f].dimension != 2 || done[t][f]) continue;
+      // The class of (t, f) with the composition from (t, f) to each member.
+      std::map<core::FaceRef, Map> comp;
+      std::vector<core::FaceRef> members{{t, f}};
+      comp.emplace(core::FaceRef{t, f}, Map());
+      done[t][f] = true;
+      for (std::size_t k = 0; k < members.size(); ++k) {
+        const auto cur = members[k];
+        for (const auto& [l, next] : arrows[cur.t][cur.f]) {
+          if (comp.count(next)) continue;
+          comp.emplace(next, bpp.mappings[l].map * comp.at(cur));
+          done[next.t][next.f] = true;
+          members.push_back(next);
+        }
+      }
+      const auto& rep_face = sds[t].faces[f];
+      for (const auto& cur : members)
+        for (const auto& [l, next] : arrows[cur.t][cur.f]) {
+          const Map via = bpp.mappings[l].map * comp.at(cur);
+          for (auto vid : rep_face.vertices)
+            if (via(sds[t].points[vid]) != comp.at(next)(sds[t].points[vid]))
+              throw std::invalid_argument(
+                  "template '" + x.templates[cur.t].name + "', boundary face " +
+                  std::to_string(cur.f) + ": the mapping " + bpp.mappings[l].name() +
+                  " sends its face class onto itself by a non-trivial symmetry (irregular "
+                  "instance graph, Eq. 4.13); a symmetric surface mesh of that face is not "
+                  "implemented yet");
+        }
+      const auto rep = mesh_facet(sds[t], boundaries[t], f, size, min_angle_deg);
+      for (const auto& g : members) {
+        auto& tb = boundaries[g.t];
+        const Map& map = comp.at(g);
+        std::vector<std::size_t> ids;
+        for (std::size_t id : rep.boundary_ids) {
+          const auto it = tb.id_of.find(map(boundaries[t].exact[id]));
+          if (it == tb.id_of.end())
+            throw std::logic_error("Algorithm 5.7: a mapped surface-mesh boundary point is not a "
+                                   "line-mesh point of the image face");
+          ids.push_back(it->second);
+        }
+        tb.facet_first[g.f] = tb.exact.size();
+        tb.facet_count[g.f] = rep.interior.size();
+        for (const auto& q : rep.interior) {
+          ids.push_back(tb.exact.size());
+          tb.exact.push_back(map(q));
+        }
+        for (const auto& c : rep.triangles) {
+          tb.triangles.push_back({ids[c[0]], ids[c[1]], ids[c[2]]});
+          tb.triangle_face.push_back(g.f);
+        }
+      }
+    }
+}
+
+/// GenerationOptions::perturb_one_surface_mesh: the first interior surface-mesh vertex of the first
+/// 2-face that some non-trivial mapping sends onto another face moves 1/16 of the way to a
+/// neighbour (exactly, so it stays in the face's plane and the surface stays a valid
+/// triangulation); its images on the related faces stay where they were.
+template <class FT>
+void perturb_one_surface_mesh(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                              std::vector<SurfaceBoundary<FT>>& boundaries) {
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    auto& tb = boundaries[m.from_template()];
+    for (auto [f, g] : bpp.letter_action[l]) {
+      // A face the mapping sends onto itself (a mirror) carries the moved vertex along.
+      if (tb.facet_count[f] == 0 || (m.from_template() == m.to_template() && f == g)) continue;
+      const std::size_t p = tb.facet_first[f];
+      for (const auto& c : tb.triangles) {
+        const auto* at = std::find(c.begin(), c.end(), p);
+        if (at == c.end()) continue;
+        const std::size_t q = c[std::size_t(at - c.begin() + 1) % 3];
+        tb.exact[p] = tb.exact[p] + core::scaled<FT, 3>(tb.exact[q] - tb.exact[p], FT(1) / FT(16));
+        return;
+      }
+    }
+  }
+  throw std::invalid_argument(
+      "perturb_one_surface_mesh: no face mapped onto another face has interior vertices");
+}
+
+/// The (from, to) vertex pairs of one template boundary mapping, from its face-to-face action:
+/// vertices by the automaton, line-mesh points in or against the edge's direction, surface-mesh
+/// points index for index (the surface meshes were carried so, see surface_meshes).
+template <class FT>
+SvbPairs mapping_pairs_3(const core::BoundaryPatchPartition<FT, 3>& bpp, std::size_t letter,
+                         const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  const auto& m = bpp.mappings[letter];
+  const std::size_t j = m.from_template(), i = m.to_template();
+  const auto& src = bpp.subdivisions[j];
+  const auto& dst = bpp.subdivisions[i];
+  SvbPairs pairs;
+  std::map<std::size_t, std::size_t> vertex_image;
+  for (auto [f, g] : bpp.letter_action[letter])
+    if (src.faces[f].dimension == 0) {
+      vertex_image[src.faces[f].vertices[0]] = dst.faces[g].vertices[0];
+      pairs.emplace_back(mesh::IndexType(src.faces[f].vertices[0]),
+                         mesh::IndexType(dst.faces[g].vertices[0]));
+    }
+  for (auto [f, g] : bpp.letter_action[letter]) {
+    const auto& face = src.faces[f];
+    if (face.dimension == 1) {
+      const auto& lf = boundaries[j].lines[f];
+      const auto& lg = boundaries[i].lines[g];
+      if (lf.n != lg.n)
+        throw std::logic_error("Algorithm 5.7: a mapping joins faces of different line meshes");
+      const auto it = vertex_image.find(face.vertices[0]);
+      if (it == vertex_image.end())
+        throw std::logic_error("Algorithm 5.7: a mapping applies to an edge but not to its end");
+      const bool same_direction = it->second == dst.faces[g].vertices[0];
+      for (std::size_t k = 1; k < lf.n; ++k)
+        pairs.emplace_back(mesh::IndexType(lf.first + k - 1),
+                           mesh::IndexType(lg.first + (same_direction ? k - 1 : lf.n - k - 1)));
+    } else if (face.dimension == 2) {
+      const std::size_t n = boundaries[j].facet_count[f];
+      if (n != boundaries[i].facet_count[g])
+        throw std::logic_error("Algorithm 5.7: a mapping joins faces of different surface meshes");
+      for (std::size_t k = 0; k < n; ++k)
+        pairs.emplace_back(mesh::IndexType(boundaries[j].facet_first[f] + k),
+                           mesh::IndexType(boundaries[i].facet_first[g] + k));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+/// Lemma 4.2, exactly, on the templates' boundary complexes (spec/lemmas.md#lemma-4-2-boundary):
+/// the instances' interiors are disjoint (checked before meshing) and TetGen kept every template
+/// boundary as its surface mesh (checked by the adapter), so AT is conforming iff the structure
+/// of the exact surface meshes is (the general checker, condition (i) over all instance pairs).
+template <class FT>
+core::Lemma42Verdict certify_3(const core::TemplatedStructure<FT, 3>& x,
+                               const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  core::TemplatedStructure<FT, 3> b;
+  b.instances = x.instances;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    core::Template<FT, 3> t{x.templates[i].name, core::TemplateKind::mesh, {}};
+    t.mesh.points = boundaries[i].exact;
+    for (const auto& c : boundaries[i].triangles)
+      for (const auto& e : core::faces(
+               core::Simplex{core::VertexId(c[0]), core::VertexId(c[1]), core::VertexId(c[2])}))
+        t.mesh.elements.push_back(e);
+    t.mesh.normalize();
+    b.templates.push_back(std::move(t));
+  }
+  return core::check_interface_conformity(b, core::apply_template(b));
+}
+
+/// Lemma 4.2 mapping by mapping (spec/lemmas.md#lemma-4-2-surface-meshes): every non-trivial
+/// template boundary mapping sends the boundary mesh of each face of its domain onto the boundary
+/// mesh of the image face, exactly — each vertex, line-mesh point and surface-mesh point onto the
+/// point the SVB identifies it with (exact arithmetic), and each surface triangle onto a surface
+/// triangle (vertex ids). The domain of 𝕋_{a,b} is T_b^-1 of the geometric interface (Def 4.7),
+/// the instances' interiors are disjoint (Eq. 4.2, checked before meshing) and TetGen kept each
+/// template boundary as its surface mesh (checked by the adapter), so this is T_a(IP_{a,b}) =
+/// T_b(IP_{b,a}) for every neighbouring pair, and no element of one instance meets a different
+/// element of the other in its relative interior: AT is conforming. The cost is the boundary
+/// size times the mappings, never instance pairs times their elements.
+template <class FT>
+core::Lemma42Verdict certify_by_mappings(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                         const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  core::Lemma42Verdict v;
+  std::vector<std::map<std::size_t, std::vector<std::array<std::size_t, 3>>>> face_triangles(
+      boundaries.size());
+  for (std::size_t t = 0; t < boundaries.size(); ++t)
+    for (std::size_t k = 0; k < boundaries[t].triangles.size(); ++k) {
+      auto c = boundaries[t].triangles[k];
+      std::sort(c.begin(), c.end());
+      face_triangles[t][boundaries[t].triangle_face[k]].push_back(c);
+    }
+  for (auto& per_template : face_triangles)
+    for (auto& [f, list] : per_template) std::sort(list.begin(), list.end());
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    ++v.pairs_checked;
+    const std::size_t j = m.from_template(), i = m.to_template();
+    const auto pairs = mapping_pairs_3(bpp, l, boundaries);
+    std::map<std::size_t, std::size_t> image;
+    for (auto [a, b] : pairs) {
+      image.emplace(std::size_t(a), std::size_t(b));
+      if (m.map(boundaries[j].exact[std::size_t(a)]) != boundaries[i].exact[std::size_t(b)]) {
+        v.holds = false;
+        v.detail = "the mapping " + m.name() + " does not send boundary vertex " +
+                   std::to_string(a) + " onto the vertex " + std::to_string(b) +
+                   " it is identified with";
+        break;
+      }
+    }
+    for (auto [f, g] : bpp.letter_action[l]) {
+      if (!v.holds || bpp.subdivisions[j].faces[f].dimension != 2) continue;
+      std::vector<std::array<std::size_t, 3>> mapped;
+      for (const auto& c : face_triangles[j][f]) {
+        std::array<std::size_t, 3> d{};
+        for (int k = 0; k < 3; ++k) {
+          const auto it = image.find(c[std::size_t(k)]);
+          d[std::size_t(k)] = it == image.end() ? std::size_t(-1) : it->second;
+        }
+        std::sort(d.begin(), d.end());
+        mapped.push_back(d);
+      }
+      std::sort(mapped.begin(), mapped.end());
+      if (mapped != face_triangles[i][g]) {
+        v.holds = false;
+        v.detail = "the mapping " + m.name() + " does not send the surface mesh of face " +
+                   std::to_string(f) + " onto that of face " + std::to_string(g);
+      }
+    }
+    if (!v.holds) {
+      v.a = m.to;
+      v.b = m.from;
+      v.condition = 2;
+      return v;
+    }
+  }
+  return v;
+}
+
+template <class FT>
+FT carrier_volume(const core::ElementComplex<FT, 3>& c) {
+  FT six(0);
+  for (const auto& e : c.elements) {
+    if (e.dim() != 3) continue;
+    const auto& a = c.points[e.v[0]];
+    const P3<FT> u = c.points[e.v[1]] - a, v = c.points[e.v[2]] - a, w = c.points[e.v[3]] - a;
+    const FT d = core::dot<FT, 3>(u, cross<FT>(v, w));
+    six += CGAL::is_negative(d) ? -d : d;
+  }
+  return six / FT(6);
+}
+
+template <class FT>
+GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o) {
+  if (!(o.size > 0) || !std::isfinite(o.size))
+    throw std::invalid_argument("--size must be a positive number");
+  std::ostringstream why;
+  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  if (!x.all_of_kind(core::TemplateKind::geometry))
+    throw std::invalid_argument("Algorithm 5.7 needs geometry templates (\"kind\": \"geometry\")");
+  const auto say = [&](const std::string& s) {
+    if (o.progress) o.progress->message(s);
+  };
+  const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
+    if (o.progress) o.progress->stage(name, total, unit);
+  };
+  stage("instance overlap (Eq. 4.2)", 0, "");
+  if (const auto overlap = core::find_instance_overlap(x))
+    throw std::invalid_argument(core::overlap_message(*overlap));
+  GenerationResult r;
+  auto& faults = r.timings.page_faults;
+  stage("boundary patch partition", 0, "");
+  auto t0 = Clock::now();
+  long f0 = minor_faults();
+  core::BppOptions bpp_options;
+  bpp_options.well_formed_checked = true;
+  if (o.progress)
+    bpp_options.on_progress = [&](std::size_t done, std::size_t total) {
+      if (done == 0)
+        o.progress->stage("boundary patch partition: mappings", total, "instance pairs");
+      o.progress->set_done(done);
+    };
+  const auto bpp = core::boundary_patch_partition(x, bpp_options);
+  r.timings.boundary_patch_partition = seconds_since(t0);
+  faults.boundary_patch_partition = minor_faults() - f0;
+  say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
+      std::to_string(bpp.mappings.size()) + " mappings");
+
+  stage("line and surface meshes", 0, "");
+  t0 = Clock::now();
+  f0 = minor_faults();
+  const FT h = exact_from_double<FT>(o.size);
+  const FT h2 = h * h;
+  std::vector<SurfaceBoundary<FT>> boundaries;
+  for (const auto& sd : bpp.subdivisions) boundaries.push_back(line_meshes_3<FT>(sd, h2, o.size));
+  surface_meshes(x, bpp, boundaries, o.size, o.min_angle_deg);
+  if (o.perturb_one_surface_mesh) perturb_one_surface_mesh(bpp, boundaries);
+  r.timings.line_meshes = seconds_since(t0);
+  faults.line_meshes = minor_faults() - f0;
+
+  t0 = Clock::now();
+  f0 = minor_faults();
+  stage("template meshing (TetGen)", x.templates.size(), "templates");
+  auto& tm = r.templated.templated;
+  tm.point_dimension = 3;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    SurfaceInput s;
+    for (const auto& p : boundaries[i].exact)
+      s.points.push_back({rounded(p[0]), rounded(p[1]), rounded(p[2])});
+    s.triangles = boundaries[i].triangles;
+    TetrahedralMeshingParameters p;
+    p.size = o.size;
+    TetrahedralMeshOutput out;
+    try {
+      out = mesh_domain_3(s, p);
+    } catch (const MeshingError& e) {
+      throw MeshingError("template '" + x.templates[i].name + "': " + e.what());
+    }
+    mesh::MeshTemplate t;
+    t.mesh.point_dimension = 3;
+    for (const auto& q : out.points) t.mesh.add_vertex(q.data());
+    for (const auto& c : out.tetrahedra) {
+      const mesh::IndexType v[4] = {mesh::IndexType(c[0]), mesh::IndexType(c[1]),
+                                    mesh::IndexType(c[2]), mesh::IndexType(c[3])};
+      t.mesh.add_cell(mesh::ElementType::tetrahedron, v);
+    }
+    for (const auto& inst : x.instances[i]) {
+      t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
+      t.region_ids.push_back(mesh::RegionIdType(inst.region));
+      tm.transformations.push_back(support::to_double_transformation<3>(inst.transformation));
+    }
+    say("template " + std::to_string(i + 1) + "/" + std::to_string(x.templates.size()) + " ('" +
+        x.templates[i].name + "'): " + std::to_string(t.mesh.cell_count()) + " tetrahedra, " +
+        std::to_string(boundaries[i].triangles.size()) + " boundary triangles");
+    tm.templates.push_back(std::move(t));
+    if (o.progress) o.progress->set_done(i + 1);
+  }
+  r.timings.template_meshing = seconds_since(t0);
+  faults.template_meshing = minor_faults() - f0;
+
+  stage("shared vertex bookkeeping", 0, "");
+  t0 = Clock::now();
+  f0 = minor_faults();
+  auto candidates = support::svb_candidates<FT, 3>(
+      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, 0);
+  std::vector<std::size_t> boundary_vertices;
+  for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
+  support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
+                                            r.templated);
+  r.timings.svb = seconds_since(t0);
+  faults.svb = minor_faults() - f0;
+
+  stage("Lemma 4.2 certificate", 0, "");
+  t0 = Clock::now();
+  f0 = minor_faults();
+  const auto verdict =
+      o.direct_certificate ? certify_3(x, boundaries) : certify_by_mappings(bpp, boundaries);
+  r.timings.certificate = seconds_since(t0);
+  faults.certificate = minor_faults() - f0;
+  r.lemma_4_2_holds = verdict.holds;
+  if (!verdict.holds)
+    r.lemma_4_2_failure =
+        core::to_string(verdict.a) + ", " + core::to_string(verdict.b) + ": " + verdict.detail;
+  say("Lemma 4.2 certificate: " + std::string(verdict.holds ? "holds" : "FAILS") + " (" +
+      std::to_string(verdict.pairs_checked) + " instance pairs)");
+  return r;
+}
+
+template <class FT>
+GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method method,
+                               const GenerationOptions& options) {
+  GenerationResult r;
+  switch (method) {
+  case Method::automatic:
+  case Method::bpp:
+    r = generate_3(x, options);
+    r.method = "bpp";
+    break;
+  case Method::conventional:
+    r = generate_3(support::as_region_templates(x), options);
+    r.method = "conventional";
+    break;
+  default:
+    throw std::invalid_argument("--method: only auto, bpp and conventional generate 3D meshes "
+                                "so far (spec/generation.md#alg-5-7)");
+  }
+  return r;
+}
+
+core::TemplatedStructure<LazyCyclotomic, 3>
+lazily(const core::TemplatedStructure<number::Cyclotomic, 3>& x) {
+  return core::convert_numbers<LazyCyclotomic>(
+      x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
+}
+
+template <class FT>
+CellEstimate estimate_3(const core::TemplatedStructure<FT, 3>& x, double size) {
+  FT volume(0);
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    volume += carrier_volume(x.templates[i].mesh) * FT(int(x.instances[i].size()));
+  CellEstimate e;
+  e.area = rounded(volume);
+  e.triangles = e.area / volume_bound(size) * kTetrahedraPerVolumeBound;
+  return e;
+}
+} // namespace
+
+CellEstimate estimate_cells(const core::TemplatedStructure<Exact, 3>& x, double size) {
+  return estimate_3(x, size);
+}
+CellEstimate estimate_cells(const core::TemplatedStructure<number::Cyclotomic, 3>& x, double size) {
+  return estimate_3(lazily(x), size);
+}
+
+GenerationResult generate_tetrahedral_mesh(const core::TemplatedStructure<Exact, 3>& x,
+                                           Method method, const GenerationOptions& options) {
+  return generate_by_3(x, method, options);
+}
+GenerationResult generate_tetrahedral_mesh(const core::TemplatedStructure<number::Cyclotomic, 3>& x,
+                                           Method method, const GenerationOptions& options) {
+  return generate_by_3(lazily(x), method, options);
+}
+
+} // namespace symmesh::gen
