@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <string>
 
 using namespace symmesh;
 using gen::SurfaceInput;
@@ -174,4 +176,37 @@ TEST(TetrahedralMesher, OrientTetrahedraPositivelySwapsNegativeOnes) {
   const mesh::IndexType flat[4] = {0, 1, 2, 2};
   m.add_cell(mesh::ElementType::tetrahedron, flat);
   EXPECT_THROW(gen::orient_tetrahedra_positively(m), gen::MeshingError);
+}
+
+namespace {
+/// A closed surface in OFF format (points, then triangles).
+SurfaceInput read_off(const std::string& path) {
+  std::ifstream in(path);
+  std::string header;
+  std::size_t points = 0, triangles = 0, edges = 0;
+  in >> header >> points >> triangles >> edges;
+  SurfaceInput s;
+  s.points.resize(points);
+  for (auto& p : s.points) in >> p[0] >> p[1] >> p[2];
+  s.triangles.resize(triangles);
+  for (auto& t : s.triangles) {
+    std::size_t k = 0;
+    in >> k >> t[0] >> t[1] >> t[2];
+  }
+  return s;
+}
+} // namespace
+
+// The surface mesh of the metal layer of the 8-TSV slice at size 0.1 (Algorithm 5.7): TetGen
+// 1.5.0 with its default BRIO/Hilbert insertion order aborted on it (assertion in locate()),
+// killing the process; the adapter inserts the points without that sort.
+TEST(TetrahedralMesher, Tsv8MetalSurfaceDoesNotAbortTetGen) {
+  const auto s = read_off(std::string(SYMMESH_SOURCE_DIR) +
+                          "/tests/data/tsv8_metal_surface_brio_abort.off");
+  ASSERT_EQ(s.points.size(), 300u);
+  gen::TetrahedralMeshingParameters p;
+  p.size = 0.1;
+  const auto m = gen::mesh_domain_3(s, p);
+  EXPECT_FALSE(gen::boundary_mismatch(s, m).has_value());
+  for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) EXPECT_GT(volume(m, t), 0);
 }

@@ -101,8 +101,15 @@ TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& s, const TetrahedralMesh
   tetgenio in, out;
   fill_input(s, in);
   std::string switches = tetgen_switches(p, !s.seeds.empty());
+  tetgenbehavior behaviour;
+  if (!behaviour.parse_commandline(switches.data()))
+    throw std::logic_error("TetGen refused the switches " + switches);
+  // TetGen 1.5.0's BRIO/Hilbert sort of the input points ends in an internal assertion (an abort,
+  // not an exception) on some surfaces, e.g. the metal layer of the 8-TSV slice at size 0.1;
+  // inserting the points in TetGen's own pseudo-random order (fixed seed) does not.
+  behaviour.brio_hilbert = 0;
   try {
-    tetrahedralize(switches.data(), &in, &out);
+    tetrahedralize(&behaviour, &in, &out);
   } catch (int code) {
     throw MeshingError("TetGen failed (code " + std::to_string(code) +
                        "): the surface is not a valid closed PLC or cannot be kept");

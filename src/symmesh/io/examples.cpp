@@ -1,6 +1,7 @@
-// Built-in 2D templated geometries (spec/examples.md).
+// Built-in 2D and 3D templated geometries (spec/examples.md).
 #include "symmesh/io/examples.h"
 
+#include <array>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -236,6 +237,61 @@ J bridge() {
       J::array({geometry("beam", beam, beams), geometry("connector", hexagon, connectors)}));
 }
 
+// ------------------------------------------------------------------------------ 3D: open TSV
+
+/// The slice of an open through-silicon via (Sections 6.3, 7.3): an n-gon prism of silicon with a
+/// coaxial open via lined by two layers, cut into n slices (the wedge between the half-planes at
+/// angle 0 and 2pi/n through the z axis). Each layer of the slice is one template (its own
+/// region), the trapezoid prism between radii r_in and r_out (circumradii of the n-gons), height
+/// 2, carried by 6 tetrahedra (the two triangle prisms of the trapezoid, 3 tetrahedra each, every
+/// vertical quad split from its lower-index bottom to its higher-index top vertex, so the
+/// carrier conforms); all instanced by the n rotations about the z axis. The via itself is empty.
+J tsv_slice_template(const std::string& name, const std::string& r_in, const std::string& r_out,
+                     int n, int region) {
+  const auto at = [&](const std::string& r, int k, const std::string& z) {
+    return J::array({r + "*" + cos_of(k, n), r + "*" + sin_of(k, n), z});
+  };
+  // 0..3 bottom (r_in at 0, r_out at 0, r_out at 1, r_in at 1), 4..7 the same on top.
+  J vertices = J::array({at(r_in, 0, "0"), at(r_out, 0, "0"), at(r_out, 1, "0"), at(r_in, 1, "0"),
+                         at(r_in, 0, "2"), at(r_out, 0, "2"), at(r_out, 1, "2"), at(r_in, 1, "2")});
+  J cells = J::array();
+  for (const auto& tri : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+    const int a = tri[0], b = tri[1], c = tri[2]; // increasing
+    cells.push_back(J::array({a, b, c, c + 4}));
+    cells.push_back(J::array({a, b, b + 4, c + 4}));
+    cells.push_back(J::array({a, a + 4, b + 4, c + 4}));
+  }
+  J inst = J::array();
+  for (int k = 0; k < n; ++k) {
+    const J row0 = J::array({cos_of(k, n), "-" + sin_of(k, n), "0"});
+    const J row1 = J::array({sin_of(k, n), cos_of(k, n), "0"});
+    const J row2 = J::array({"0", "0", "1"});
+    inst.push_back(
+        instance(k == 0 ? identity() : J{{"matrix", J::array({row0, row1, row2})}}, region));
+  }
+  return J{{"name", name},
+           {"kind", "geometry"},
+           {"vertices", vertices},
+           {"cells", cells},
+           {"instances", inst}};
+}
+
+J tsv(int n) {
+  J d{{"symmesh", "templated-structure/1"},
+      {"dimension", 3},
+      {"description",
+       "Open TSV, n = " + std::to_string(n) + ": a regular " + std::to_string(n) +
+           "-gon prism of silicon (circumradius 1, height 2) with a coaxial open via of "
+           "circumradius 1/5 lined by an oxide layer (to 1/4) and a metal layer (to 3/10), as "
+           "three slice templates (one per region: oxide 1, metal 2, silicon 3) instanced by the " +
+           std::to_string(n) + " rotations about the z axis. Exact in K_" + std::to_string(n) +
+           "."},
+      {"templates", J::array({tsv_slice_template("oxide", "1/5", "1/4", n, 1),
+                              tsv_slice_template("metal", "1/4", "3/10", n, 2),
+                              tsv_slice_template("silicon", "3/10", "1", n, 3)})}};
+  return d;
+}
+
 struct Entry {
   std::string summary;
   std::function<J()> make;
@@ -257,6 +313,12 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
       v.push_back({"ngon-" + std::to_string(n),
                    {"regular " + std::to_string(n) + "-gon, whole (for cut --rotation)",
                     [n] { return ngon_whole(n); }}});
+    for (int n : {8, 16, 32, 64, 128})
+      v.push_back(
+          {"tsv-" + std::to_string(n),
+           {"3D open TSV, " + std::to_string(n) + "-gon prism, via lined by 2 layers, 3 regions, " +
+                std::to_string(n) + " slices",
+            [n] { return tsv(n); }}});
     v.push_back({"gear", {"12-tooth gear with a bore, whole (for cut --rotation 12)", gear}});
     v.push_back({"mosfet", {"MOSFET-like device, 4 regions, one mirror axis", mosfet}});
     v.push_back({"aircraft", {"aircraft-like outline, one mirror axis, sharp angles", aircraft}});
