@@ -2,7 +2,7 @@
 # The main job on built-in examples: check the Fig. 4.3 templated mesh and the Fig. 4.4
 # non-conforming structure, render instance graphs and boundary patch partitions (Figs 4.10,
 # 6.8, a 3D rotational slice), spot-check the interface lemmas, and generate templated meshes of
-# built-in 2D objects.
+# built-in 2D objects and the 3D open TSV.
 set -uo pipefail
 bin=${1:-build/symmesh}
 out=${2:-out}
@@ -43,6 +43,13 @@ run "$bin" example gear -o "$out/gear.json" || exit 1
 run "$bin" cut "$out/gear.json" --rotation 12 -o "$out/gear.slice.json" --report "$out/gear.cut.json" || exit 1
 run "$bin" generate "$out/gear.slice.json" --size 0.02 --min-angle 25 -o "$out/gear.vtu" \
   --report "$out/gear.report.json" --quiet || exit 1
+# 3D (Algorithm 5.7 with TetGen): the 16-TSV by rotational slices (auto picks it) next to TetGen
+# on the whole geometry (conventional).
+run "$bin" example tsv-16 -o "$out/tsv-16.json" || exit 1
+for method in auto conventional; do
+  run "$bin" generate "$out/tsv-16.json" --size 0.08 --method "$method" -o "$out/tsv-16.$method.vtu" \
+    --templated "$out/tsv-16.$method.tmesh" --report "$out/tsv-16.$method.report.json" --quiet || exit 1
+done
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"

@@ -5,7 +5,7 @@
 # closed boundary, boundary area of the union (a non-conforming interface would add to it), no
 # duplicate vertex, positive volumes, exact volume), .msh opened by gmsh, byte-identical reruns,
 # the cell estimate refusing an infeasible --size, and a 3D method that does not exist yet
-# refused with exit 2 and no file.
+# refused with exit 2 and no file; the built-in 8-TSV by the rotational method (= bpp bytes).
 source "$(dirname "$0")/common.sh" "$@"
 PY=/usr/bin/python3
 
@@ -48,9 +48,29 @@ expect_exit 2 "--size 1e-4 in 3D is refused by the cell estimate" -- \
   "$BIN" generate data/rotational_slice_3d.json --size 1e-4 -o "$TMP/huge.vtu"
 grep -q "tetrahedra (volume 4" "$TMP/stderr" || fail "the refusal states the tetrahedra and volume"
 [ ! -e "$TMP/huge.vtu" ] || fail "a refused 3D run left a file"
-expect_exit 2 "--method rotational in 3D is refused (not implemented yet)" -- \
+expect_exit 2 "--method rotational refuses slices that meet only on the axis (non-consecutive copies touch)" -- \
   "$BIN" generate data/rotational_slice_3d.json --size 0.15 --method rotational -o "$TMP/rot.vtu"
+grep -q "touch but are not consecutive" "$TMP/stderr" || fail "the refusal names the touching copies"
 [ ! -e "$TMP/rot.vtu" ] || fail "a refused 3D method left a file"
+expect_exit 2 "--method gmsh is not there in 3D yet" -- \
+  "$BIN" generate data/rotational_slice_3d.json --size 0.15 --method gmsh -o "$TMP/g.vtu"
+
+# The built-in 8-TSV (K_8): auto picks the rotational method (Section 6.3 in 3D), whose mesh is
+# byte for byte the one of bpp; meshio checks volume and boundary area of the n-gon prism with
+# the open via.
+"$BIN" example tsv-8 -o "$TMP/tsv8_input.json"
+read -r TSV_VOLUME TSV_SURFACE < <($PY -c "
+import math
+n, h, R, r = 8, 2.0, 1.0, 0.2
+area = lambda q: n / 2 * q * q * math.sin(2 * math.pi / n)
+perimeter = lambda q: 2 * n * q * math.sin(math.pi / n)
+print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))")
+generate tsv8 "$TMP/tsv8_input.json" "$TSV_VOLUME" "$TSV_SURFACE" auto vtu
+$PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['method'] == 'rotational', r['method']" \
+  "$TMP/tsv8.json" && pass "auto runs the rotational method on the TSV" || fail "auto on the TSV: method"
+generate tsv8_bpp "$TMP/tsv8_input.json" "$TSV_VOLUME" "$TSV_SURFACE" bpp vtu
+cmp -s "$TMP/tsv8.vtu" "$TMP/tsv8_bpp.vtu" && pass "TSV: rotational and bpp write the same bytes" \
+  || fail "TSV: rotational and bpp differ"
 expect_exit 2 "3D mesh templates are refused (Algorithm 5.7 needs geometry templates)" -- \
   "$BIN" generate data/reflected_cube_3d.json --size 0.15 -o "$TMP/mt.vtu"
 finish

@@ -8,6 +8,7 @@
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/region_templates.h"
+#include "symmesh/gen/rotation_order.h"
 #include "symmesh/gen/shared_vertex_bookkeeping.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 #include "symmesh/gen/triangle_mesher.h"
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -405,6 +407,55 @@ core::Lemma42Verdict certify_by_mappings(const core::BoundaryPatchPartition<FT, 
   return v;
 }
 
+/// Section 6.3 in 3D: the BPP of the first two rotated copies shows every interface of
+/// consecutive copies (k, k+1) (rotations of (0, 1)); the method also needs that no two
+/// non-consecutive copies touch (e.g. slices meeting only on the axis), because their interfaces
+/// would be neither partitioned nor certified. Up to the rotation it suffices to decide the
+/// pairs (copy 0, copy j), 2 <= j <= n/2, exactly (geometry_interface_nonempty on the carriers).
+/// Returns the first touching pair as text, or nothing.
+template <class FT>
+std::optional<std::string> non_consecutive_contact(const core::TemplatedStructure<FT, 3>& x,
+                                                   std::size_t n) {
+  if (n < 4) return std::nullopt;
+  // Certified interval boxes of the carriers' cells of copy k of every template filter the
+  // candidates; only copies whose boxes meet copy 0's are decided exactly.
+  const auto cell_boxes = [&](std::size_t k) {
+    std::vector<core::EnclosingBox<FT, 3>> out;
+    for (std::size_t i = 0; i < x.templates.size(); ++i) {
+      const auto& c = x.templates[i].mesh;
+      std::vector<P3<FT>> pts;
+      for (const auto& p : c.points) pts.push_back(x.instances[i][k].transformation(p));
+      for (const auto& e : c.elements)
+        if (e.dim() == 3) out.push_back(core::EnclosingBox<FT, 3>::of(pts, e));
+    }
+    return out;
+  };
+  const auto first = cell_boxes(0);
+  core::TemplatedStructure<FT, 3> y;
+  y.templates = x.templates;
+  y.instances.resize(x.templates.size());
+  for (std::size_t i = 0; i < x.templates.size(); ++i) y.instances[i].push_back(x.instances[i][0]);
+  std::vector<std::size_t> copies;
+  for (std::size_t j = 2; j <= n / 2; ++j) {
+    bool meet = false;
+    for (const auto& b : cell_boxes(j))
+      for (const auto& a : first) meet = meet || a.overlaps(b);
+    if (!meet) continue;
+    copies.push_back(j);
+    for (std::size_t i = 0; i < x.templates.size(); ++i)
+      y.instances[i].push_back(x.instances[i][j]);
+  }
+  if (copies.empty()) return std::nullopt;
+  const auto si = core::apply_template(y);
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    for (std::size_t i2 = 0; i2 < x.templates.size(); ++i2)
+      for (std::size_t k = 0; k < copies.size(); ++k)
+        if (core::geometry_interface_nonempty(si, si.index_of({i, 0}), si.index_of({i2, k + 1})))
+          return "T_{" + std::to_string(i + 1) + ",1} and T_{" + std::to_string(i2 + 1) + "," +
+                 std::to_string(copies[k] + 1) + "} touch but are not consecutive rotated copies";
+  return std::nullopt;
+}
+
 template <class FT>
 FT carrier_volume(const core::ElementComplex<FT, 3>& c) {
   FT six(0);
@@ -418,8 +469,10 @@ FT carrier_volume(const core::ElementComplex<FT, 3>& c) {
   return six / FT(6);
 }
 
+/// `rotational`: Section 6.3 with Algorithm 6.2 in 3D (spec/generation.md#rotational-3d).
 template <class FT>
-GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o) {
+GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o,
+                            bool rotational = false) {
   if (!(o.size > 0) || !std::isfinite(o.size))
     throw std::invalid_argument("--size must be a positive number");
   std::ostringstream why;
@@ -432,14 +485,34 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
     if (o.progress) o.progress->stage(name, total, unit);
   };
-  stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap(x))
-    throw std::invalid_argument(core::overlap_message(*overlap));
   GenerationResult r;
   auto& faults = r.timings.page_faults;
-  stage("boundary patch partition", 0, "");
+  // The rotational checks come first (timed with the BPP, whose shortcut they license): they let
+  // Eq. 4.2 be checked up to the rotation too.
   auto t0 = Clock::now();
   long f0 = minor_faults();
+  std::size_t rotations = 0;
+  core::TemplatedStructure<FT, 3> two_copies;
+  if (rotational) {
+    std::string reason;
+    rotations = support::rotation_order(x, reason);
+    if (rotations == 0)
+      throw std::invalid_argument("--method rotational: not a rotational slice structure: " +
+                                  reason);
+    if (const auto contact = non_consecutive_contact(x, rotations))
+      throw std::invalid_argument("--method rotational: " + *contact +
+                                  " (3D slices may meet only their neighbours; use bpp)");
+    two_copies.templates = x.templates;
+    for (const auto& list : x.instances) two_copies.instances.push_back({list[0], list[1]});
+  }
+  const double symmetry_seconds = seconds_since(t0);
+  const long symmetry_faults = minor_faults() - f0;
+  stage("instance overlap (Eq. 4.2)", 0, "");
+  if (const auto overlap = core::find_instance_overlap(x, rotations))
+    throw std::invalid_argument(core::overlap_message(*overlap));
+  stage("boundary patch partition", 0, "");
+  t0 = Clock::now();
+  f0 = minor_faults();
   core::BppOptions bpp_options;
   bpp_options.well_formed_checked = true;
   if (o.progress)
@@ -448,9 +521,9 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
         o.progress->stage("boundary patch partition: mappings", total, "instance pairs");
       o.progress->set_done(done);
     };
-  const auto bpp = core::boundary_patch_partition(x, bpp_options);
-  r.timings.boundary_patch_partition = seconds_since(t0);
-  faults.boundary_patch_partition = minor_faults() - f0;
+  const auto bpp = core::boundary_patch_partition(rotational ? two_copies : x, bpp_options);
+  r.timings.boundary_patch_partition = symmetry_seconds + seconds_since(t0);
+  faults.boundary_patch_partition = symmetry_faults + minor_faults() - f0;
   say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
       std::to_string(bpp.mappings.size()) + " mappings");
 
@@ -510,7 +583,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   t0 = Clock::now();
   f0 = minor_faults();
   auto candidates = support::svb_candidates<FT, 3>(
-      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, 0);
+      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations);
   std::vector<std::size_t> boundary_vertices;
   for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
   support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
@@ -539,18 +612,35 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
                                const GenerationOptions& options) {
   GenerationResult r;
   switch (method) {
-  case Method::automatic:
+  case Method::automatic: {
+    // Rotational when its exact checks pass (the slices of a TSV), else bpp.
+    std::string unused;
+    const std::size_t n = support::rotation_order(x, unused);
+    if (n > 0 && !non_consecutive_contact(x, n)) {
+      r = generate_3(x, options, true);
+      r.method = "rotational";
+    } else {
+      r = generate_3(x, options);
+      r.method = "bpp";
+    }
+    break;
+  }
   case Method::bpp:
     r = generate_3(x, options);
     r.method = "bpp";
+    break;
+  case Method::rotational:
+    r = generate_3(x, options, true);
+    r.method = "rotational";
     break;
   case Method::conventional:
     r = generate_3(support::as_region_templates(x), options);
     r.method = "conventional";
     break;
   default:
-    throw std::invalid_argument("--method: only auto, bpp and conventional generate 3D meshes "
-                                "so far (spec/generation.md#alg-5-7)");
+    throw std::invalid_argument(
+        "--method: only auto, bpp, rotational and conventional generate 3D meshes "
+        "so far (spec/generation.md#alg-5-7)");
   }
   return r;
 }

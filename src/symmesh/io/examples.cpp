@@ -244,18 +244,22 @@ J bridge() {
 /// angle 0 and 2pi/n through the z axis). Each layer of the slice is one template (its own
 /// region), the trapezoid prism between radii r_in and r_out (circumradii of the n-gons), height
 /// 2, carried by 6 tetrahedra (the two triangle prisms of the trapezoid, 3 tetrahedra each, every
-/// vertical quad split from its lower-index bottom to its higher-index top vertex, so the
-/// carrier conforms); all instanced by the n rotations about the z axis. The via itself is empty.
+/// vertical quad split from its lower-index bottom to its higher-index top vertex); all instanced
+/// by the n rotations about the z axis. The via itself is empty.
 J tsv_slice_template(const std::string& name, const std::string& r_in, const std::string& r_out,
                      int n, int region) {
   const auto at = [&](const std::string& r, int k, const std::string& z) {
     return J::array({r + "*" + cos_of(k, n), r + "*" + sin_of(k, n), z});
   };
-  // 0..3 bottom (r_in at 0, r_out at 0, r_out at 1, r_in at 1), 4..7 the same on top.
-  J vertices = J::array({at(r_in, 0, "0"), at(r_out, 0, "0"), at(r_out, 1, "0"), at(r_in, 1, "0"),
-                         at(r_in, 0, "2"), at(r_out, 0, "2"), at(r_out, 1, "2"), at(r_in, 1, "2")});
+  // 0..3 bottom (r_in at angle 0, r_out at 0, r_in at 2pi/n, r_out at 2pi/n), 4..7 the same on
+  // top: the two slice faces then get the same diagonal up to the rotation (inner bottom to
+  // outer top), and every radial face the same as its neighbour layer's (angle 0 bottom to
+  // angle 2pi/n top), so the carriers of all instances conform (the conventional baseline needs
+  // the union of a region's instances to be a mesh).
+  J vertices = J::array({at(r_in, 0, "0"), at(r_out, 0, "0"), at(r_in, 1, "0"), at(r_out, 1, "0"),
+                         at(r_in, 0, "2"), at(r_out, 0, "2"), at(r_in, 1, "2"), at(r_out, 1, "2")});
   J cells = J::array();
-  for (const auto& tri : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+  for (const auto& tri : {std::array<int, 3>{0, 1, 3}, std::array<int, 3>{0, 2, 3}}) {
     const int a = tri[0], b = tri[1], c = tri[2]; // increasing
     cells.push_back(J::array({a, b, c, c + 4}));
     cells.push_back(J::array({a, b, b + 4, c + 4}));
