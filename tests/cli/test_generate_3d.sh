@@ -71,6 +71,20 @@ $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['method'] == '
 generate tsv8_bpp "$TMP/tsv8_input.json" "$TSV_VOLUME" "$TSV_SURFACE" bpp vtu
 cmp -s "$TMP/tsv8.vtu" "$TMP/tsv8_bpp.vtu" && pass "TSV: rotational and bpp write the same bytes" \
   || fail "TSV: rotational and bpp differ"
+
+# Every built-in 3D object (example --list, summary "3D ..."): auto (rotational) at a coarse
+# size, the same meshio checks with its own volume and boundary area.
+for name in $("$BIN" example --list | grep $'\t3D ' | cut -f1); do
+  n=${name#tsv-}
+  "$BIN" example "$name" -o "$TMP/${name}_input.json"
+  read -r v a < <($PY -c "
+import math
+n, h, R, r = $n, 2.0, 1.0, 0.2
+area = lambda q: n / 2 * q * q * math.sin(2 * math.pi / n)
+perimeter = lambda q: 2 * n * q * math.sin(math.pi / n)
+print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))")
+  generate "$name" "$TMP/${name}_input.json" "$v" "$a" auto msh
+done
 expect_exit 2 "3D mesh templates are refused (Algorithm 5.7 needs geometry templates)" -- \
   "$BIN" generate data/reflected_cube_3d.json --size 0.15 -o "$TMP/mt.vtu"
 finish

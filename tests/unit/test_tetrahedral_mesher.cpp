@@ -201,8 +201,8 @@ SurfaceInput read_off(const std::string& path) {
 // 1.5.0 with its default BRIO/Hilbert insertion order aborted on it (assertion in locate()),
 // killing the process; the adapter inserts the points without that sort.
 TEST(TetrahedralMesher, Tsv8MetalSurfaceDoesNotAbortTetGen) {
-  const auto s = read_off(std::string(SYMMESH_SOURCE_DIR) +
-                          "/tests/data/tsv8_metal_surface_brio_abort.off");
+  const auto s =
+      read_off(std::string(SYMMESH_SOURCE_DIR) + "/tests/data/tsv8_metal_surface_brio_abort.off");
   ASSERT_EQ(s.points.size(), 300u);
   gen::TetrahedralMeshingParameters p;
   p.size = 0.1;

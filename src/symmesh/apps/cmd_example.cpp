@@ -42,9 +42,9 @@ int run_example(const ExampleOptions& o) {
 
 void add_example(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ExampleOptions>();
-  auto* cmd = app.add_subcommand(
-      "example", "Write a built-in 2D templated geometry (n-gons, MOSFET, aircraft, bridge, star) "
-                 "as JSON (spec/examples.md).");
+  auto* cmd = app.add_subcommand("example", "Write a built-in templated geometry (2D: n-gons, "
+                                            "MOSFET, aircraft, bridge, star; 3D: open TSVs) "
+                                            "as JSON (spec/examples.md).");
   cmd->add_option("name", o->name, "example name (see --list)");
   cmd->add_option("-o,--output", o->out, "templated-geometry JSON to write");
   cmd->add_flag("--list", o->list, "list the built-in examples");

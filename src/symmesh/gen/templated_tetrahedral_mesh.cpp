@@ -7,6 +7,7 @@
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/gen/generation_support.h"
+#include "symmesh/gen/pipeline_stages.h"
 #include "symmesh/gen/region_templates.h"
 #include "symmesh/gen/rotation_order.h"
 #include "symmesh/gen/shared_vertex_bookkeeping.h"
@@ -510,22 +511,8 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   stage("instance overlap (Eq. 4.2)", 0, "");
   if (const auto overlap = core::find_instance_overlap(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
-  stage("boundary patch partition", 0, "");
-  t0 = Clock::now();
-  f0 = minor_faults();
-  core::BppOptions bpp_options;
-  bpp_options.well_formed_checked = true;
-  if (o.progress)
-    bpp_options.on_progress = [&](std::size_t done, std::size_t total) {
-      if (done == 0)
-        o.progress->stage("boundary patch partition: mappings", total, "instance pairs");
-      o.progress->set_done(done);
-    };
-  const auto bpp = core::boundary_patch_partition(rotational ? two_copies : x, bpp_options);
-  r.timings.boundary_patch_partition = symmetry_seconds + seconds_since(t0);
-  faults.boundary_patch_partition = symmetry_faults + minor_faults() - f0;
-  say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
-      std::to_string(bpp.mappings.size()) + " mappings");
+  const auto bpp = support::boundary_patch_stage(rotational ? two_copies : x, o, symmetry_seconds,
+                                                 symmetry_faults, r);
 
   stage("line and surface meshes", 0, "");
   t0 = Clock::now();
@@ -591,19 +578,9 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   r.timings.svb = seconds_since(t0);
   faults.svb = minor_faults() - f0;
 
-  stage("Lemma 4.2 certificate", 0, "");
-  t0 = Clock::now();
-  f0 = minor_faults();
-  const auto verdict =
-      o.direct_certificate ? certify_3(x, boundaries) : certify_by_mappings(bpp, boundaries);
-  r.timings.certificate = seconds_since(t0);
-  faults.certificate = minor_faults() - f0;
-  r.lemma_4_2_holds = verdict.holds;
-  if (!verdict.holds)
-    r.lemma_4_2_failure =
-        core::to_string(verdict.a) + ", " + core::to_string(verdict.b) + ": " + verdict.detail;
-  say("Lemma 4.2 certificate: " + std::string(verdict.holds ? "holds" : "FAILS") + " (" +
-      std::to_string(verdict.pairs_checked) + " instance pairs)");
+  support::certificate_stage(o, r, [&] {
+    return o.direct_certificate ? certify_3(x, boundaries) : certify_by_mappings(bpp, boundaries);
+  });
   return r;
 }
 

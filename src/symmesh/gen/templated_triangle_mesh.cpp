@@ -6,6 +6,7 @@
 #include "symmesh/core/line_mesh_conformity.h"
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/gmsh_mesher.h"
+#include "symmesh/gen/pipeline_stages.h"
 #include "symmesh/gen/region_templates.h"
 #include "symmesh/gen/rotation_order.h"
 #include "symmesh/gen/shared_vertex_bookkeeping.h"
@@ -451,9 +452,8 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   stage("instance overlap (Eq. 4.2)", 0, "");
   if (const auto overlap = core::find_instance_overlap(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
-  stage("boundary patch partition", 0, "");
   GenerationResult r;
-  auto t0 = Clock::now();
+  auto t0 = Clock::now(); // the copies' preparation is timed with the BPP
   long f0 = minor_faults();
   auto& faults = r.timings.page_faults;
   core::TemplatedStructure<FT, 2> two_copies;
@@ -472,20 +472,9 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     two_copies.templates = x.templates;
     for (const auto& list : x.instances) two_copies.instances.push_back({list[0]});
   }
-  core::BppOptions bpp_options;
-  bpp_options.well_formed_checked = true; // above, on x (two_copies has x's templates)
-  if (o.progress)
-    bpp_options.on_progress = [&](std::size_t done, std::size_t total) {
-      if (done == 0)
-        o.progress->stage("boundary patch partition: mappings", total, "instance pairs");
-      o.progress->set_done(done);
-    };
-  const auto bpp =
-      core::boundary_patch_partition(rotational || group ? two_copies : x, bpp_options);
-  r.timings.boundary_patch_partition = symmetry_seconds + seconds_since(t0);
-  faults.boundary_patch_partition = faults_symmetry + minor_faults() - f0;
-  say("boundary patch partition: " + std::to_string(bpp.patches.size()) + " patches, " +
-      std::to_string(bpp.mappings.size()) + " mappings");
+  const auto bpp = support::boundary_patch_stage(rotational || group ? two_copies : x, o,
+                                                 symmetry_seconds + seconds_since(t0),
+                                                 faults_symmetry + minor_faults() - f0, r);
 
   stage("line meshes", 0, "");
   t0 = Clock::now();
@@ -562,18 +551,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   r.timings.svb = seconds_since(t0);
   faults.svb = minor_faults() - f0;
 
-  stage("Lemma 4.2 certificate", 0, "");
-  t0 = Clock::now();
-  f0 = minor_faults();
-  const auto verdict = certify(x, boundaries, tm, rotations);
-  r.timings.certificate = seconds_since(t0);
-  faults.certificate = minor_faults() - f0;
-  r.lemma_4_2_holds = verdict.holds;
-  if (!verdict.holds)
-    r.lemma_4_2_failure =
-        core::to_string(verdict.a) + ", " + core::to_string(verdict.b) + ": " + verdict.detail;
-  say("Lemma 4.2 certificate: " + std::string(verdict.holds ? "holds" : "FAILS") + " (" +
-      std::to_string(verdict.pairs_checked) + " instance pairs)");
+  support::certificate_stage(o, r, [&] { return certify(x, boundaries, tm, rotations); });
   return r;
 }
 

@@ -340,7 +340,8 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
 
 std::vector<ExampleInfo> example_list() {
   std::vector<ExampleInfo> out;
-  for (const auto& [name, e] : registry()) out.push_back({name, e.summary});
+  for (const auto& [name, e] : registry())
+    out.push_back({name, e.summary, e.summary.rfind("3D ", 0) == 0 ? 3 : 2});
   return out;
 }
 
