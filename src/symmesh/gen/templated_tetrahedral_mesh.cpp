@@ -476,6 +476,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
                             bool rotational = false) {
   if (!(o.size > 0) || !std::isfinite(o.size))
     throw std::invalid_argument("--size must be a positive number");
+  if (o.progress) o.progress->stage("templates well-formed", 0, "");
   std::ostringstream why;
   if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   if (!x.all_of_kind(core::TemplateKind::geometry))
@@ -611,6 +612,9 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     r.method = "rotational";
     break;
   case Method::conventional:
+    // Exact and slow for many instances in K_m (the 32-TSV: about 15 s); a progress line shows it.
+    if (options.progress)
+      options.progress->stage("conventional input: the regions of AT as templates", 0, "");
     r = generate_3(support::as_region_templates(x), options);
     r.method = "conventional";
     break;
