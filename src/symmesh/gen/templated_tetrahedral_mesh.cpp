@@ -8,11 +8,11 @@
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/pipeline_stages.h"
-#include "symmesh/gen/region_templates.h"
 #include "symmesh/gen/rotation_order.h"
 #include "symmesh/gen/shared_vertex_bookkeeping.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 #include "symmesh/gen/triangle_mesher.h"
+#include "symmesh/mesh/union_find.h"
 #include "symmesh/number/cyclotomic_cgal.h"
 
 #include <algorithm>
@@ -470,10 +470,124 @@ FT carrier_volume(const core::ElementComplex<FT, 3>& c) {
   return six / FT(6);
 }
 
+/// The conventional baseline of Section 7.1 in 3D (spec/generation.md#conventional-3d): the same
+/// mesher with the same switches on the whole geometry. The boundary of AT's instances — the
+/// templates' surface meshes placed by the instances and identified through the SVB, so every
+/// interface triangle appears once — is meshed by one TetGen call with a region seed inside each
+/// instance (-A); its boundary is checked to be that surface exactly (the adapter). The result is
+/// stored as one template per region, instanced once by the identity, whose shared TetGen vertices
+/// are the SVB tables; it is conforming by construction (one tetrahedralization), so the
+/// certificate is the adapter's boundary check.
+template <class FT>
+void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
+                const std::vector<SurfaceBoundary<FT>>& boundaries, const GenerationOptions& o,
+                GenerationResult& r) {
+  const auto t0 = Clock::now();
+  const long f0 = minor_faults();
+  if (o.progress) o.progress->stage("whole-geometry meshing (TetGen)", 0, "");
+  // Global surface vertices: union-find over (instance, boundary vertex) with the SVB.
+  std::vector<std::size_t> first;
+  std::vector<core::InstanceId> ids;
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    for (std::size_t g = 0; g < x.instances[i].size(); ++g) {
+      first.push_back(total);
+      ids.push_back({i, g});
+      total += boundaries[i].exact.size();
+    }
+  mesh::UnionFind uf(total);
+  for (const auto& id : r.templated.identifications)
+    for (auto [a, b] : r.templated.tables[std::size_t(id.table)].pairs)
+      uf.unite(first[std::size_t(id.from_instance)] + std::size_t(a),
+               first[std::size_t(id.to_instance)] + std::size_t(b));
+  SurfaceInput s;
+  std::vector<std::size_t> global(total, std::size_t(-1));
+  std::map<std::array<std::size_t, 3>, std::size_t> seen;
+  for (std::size_t a = 0; a < ids.size(); ++a) {
+    const auto& tb = boundaries[ids[a].i];
+    const auto& t = x.tf(ids[a]);
+    for (std::size_t v = 0; v < tb.exact.size(); ++v) {
+      const std::size_t root = uf.find(first[a] + v);
+      if (global[root] == std::size_t(-1)) {
+        global[root] = s.points.size();
+        const auto q = t(tb.exact[v]);
+        s.points.push_back({rounded(q[0]), rounded(q[1]), rounded(q[2])});
+      }
+    }
+    for (const auto& c : tb.triangles) {
+      std::array<std::size_t, 3> g{};
+      for (int k = 0; k < 3; ++k) g[std::size_t(k)] = global[uf.find(first[a] + c[std::size_t(k)])];
+      std::array<std::size_t, 3> key = g;
+      std::sort(key.begin(), key.end());
+      if (seen.emplace(key, s.triangles.size()).second) s.triangles.push_back(g);
+    }
+    // A seed strictly inside the instance: the centroid of its carrier's first cell.
+    const auto& carrier = x.templates[ids[a].i].mesh;
+    for (const auto& e : carrier.elements) {
+      if (e.dim() != 3) continue;
+      P3<FT> c = carrier.points[e.v[0]];
+      for (int k = 1; k < 4; ++k) c = c + carrier.points[e.v[k]];
+      const auto q = t(core::scaled<FT, 3>(c, FT(1) / FT(4)));
+      s.seeds.push_back({{rounded(q[0]), rounded(q[1]), rounded(q[2])},
+                         int(x.instances[ids[a].i][ids[a].g].region)});
+      break;
+    }
+  }
+  TetrahedralMeshingParameters p;
+  p.size = o.size;
+  const auto out = mesh_domain_3(s, p);
+  // One template per region; vertices numbered per region in global order.
+  std::map<int, std::vector<std::size_t>> by_region;
+  for (std::size_t c = 0; c < out.tetrahedra.size(); ++c) by_region[out.region[c]].push_back(c);
+  auto& tm = r.templated.templated;
+  tm = mesh::TemplatedMesh{};
+  tm.point_dimension = 3;
+  r.templated.tables.clear();
+  r.templated.identifications.clear();
+  std::vector<std::map<std::size_t, mesh::IndexType>> local;
+  for (const auto& [region, cells] : by_region) {
+    mesh::MeshTemplate t;
+    t.mesh.point_dimension = 3;
+    std::map<std::size_t, mesh::IndexType> ids_here;
+    for (std::size_t c : cells)
+      for (std::size_t v : out.tetrahedra[c]) ids_here.emplace(v, 0);
+    for (auto& [v, l] : ids_here) l = t.mesh.add_vertex(out.points[v].data());
+    for (std::size_t c : cells) {
+      mesh::IndexType v[4];
+      for (int k = 0; k < 4; ++k) v[k] = ids_here.at(out.tetrahedra[c][std::size_t(k)]);
+      t.mesh.add_cell(mesh::ElementType::tetrahedron, v);
+    }
+    t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
+    t.region_ids.push_back(mesh::RegionIdType(region));
+    tm.transformations.push_back({{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}});
+    tm.templates.push_back(std::move(t));
+    local.push_back(std::move(ids_here));
+  }
+  for (std::size_t a = 0; a < local.size(); ++a)
+    for (std::size_t b = a + 1; b < local.size(); ++b) {
+      mesh::VertexIdentificationTable table{mesh::IndexType(a), mesh::IndexType(b), {}};
+      for (const auto& [v, la] : local[a])
+        if (const auto it = local[b].find(v); it != local[b].end())
+          table.pairs.emplace_back(la, it->second);
+      if (table.pairs.empty()) continue;
+      r.templated.identifications.push_back(
+          {mesh::IndexType(a), mesh::IndexType(b), mesh::IndexType(r.templated.tables.size())});
+      r.templated.tables.push_back(std::move(table));
+    }
+  r.timings.template_meshing = seconds_since(t0);
+  r.timings.page_faults.template_meshing = minor_faults() - f0;
+  r.lemma_4_2_holds = true; // one tetrahedralization whose boundary was checked by the adapter
+  if (o.progress)
+    o.progress->message("whole geometry: " + std::to_string(out.tetrahedra.size()) +
+                        " tetrahedra in " + std::to_string(by_region.size()) + " regions");
+}
+
 /// `rotational`: Section 6.3 with Algorithm 6.2 in 3D (spec/generation.md#rotational-3d).
+/// `whole`: the conventional baseline (#conventional-3d): the same boundary meshes, then one
+/// TetGen call on the whole geometry instead of one per template.
 template <class FT>
 GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o,
-                            bool rotational = false) {
+                            bool rotational = false, bool whole = false) {
   if (!(o.size > 0) || !std::isfinite(o.size))
     throw std::invalid_argument("--size must be a positive number");
   if (o.progress) o.progress->stage("templates well-formed", 0, "");
@@ -527,6 +641,23 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   r.timings.line_meshes = seconds_since(t0);
   faults.line_meshes = minor_faults() - f0;
 
+  stage("shared vertex bookkeeping", 0, "");
+  t0 = Clock::now();
+  f0 = minor_faults();
+  auto candidates = support::svb_candidates<FT, 3>(
+      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations);
+  std::vector<std::size_t> boundary_vertices;
+  for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
+  support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
+                                            r.templated);
+  r.timings.svb = seconds_since(t0);
+  faults.svb = minor_faults() - f0;
+
+  if (whole) {
+    mesh_whole(x, boundaries, o, r);
+    return r;
+  }
+
   t0 = Clock::now();
   f0 = minor_faults();
   stage("template meshing (TetGen)", x.templates.size(), "templates");
@@ -567,18 +698,6 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   r.timings.template_meshing = seconds_since(t0);
   faults.template_meshing = minor_faults() - f0;
 
-  stage("shared vertex bookkeeping", 0, "");
-  t0 = Clock::now();
-  f0 = minor_faults();
-  auto candidates = support::svb_candidates<FT, 3>(
-      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations);
-  std::vector<std::size_t> boundary_vertices;
-  for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
-  support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
-                                            r.templated);
-  r.timings.svb = seconds_since(t0);
-  faults.svb = minor_faults() - f0;
-
   support::certificate_stage(o, r, [&] {
     return o.direct_certificate ? certify_3(x, boundaries) : certify_by_mappings(bpp, boundaries);
   });
@@ -611,13 +730,14 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     r = generate_3(x, options, true);
     r.method = "rotational";
     break;
-  case Method::conventional:
-    // Exact and slow for many instances in K_m (the 32-TSV: about 15 s); a progress line shows it.
-    if (options.progress)
-      options.progress->stage("conventional input: the regions of AT as templates", 0, "");
-    r = generate_3(support::as_region_templates(x), options);
+  case Method::conventional: {
+    // The boundary meshes as the templated method makes them (rotational when it applies).
+    std::string unused;
+    const std::size_t n = support::rotation_order(x, unused);
+    r = generate_3(x, options, n > 0 && !non_consecutive_contact(x, n), true);
     r.method = "conventional";
     break;
+  }
   default:
     throw std::invalid_argument(
         "--method: only auto, bpp, rotational and conventional generate 3D meshes "
