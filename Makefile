@@ -3,7 +3,8 @@
 #   make test : install deps, build, run every test (unit, proofs-checks, CLI end-to-end)
 #   make bench: build the benchmarks (Release, build-bench/), run them, write docs/benchmarks/
 #               (rotation composition and the Lemma 4.2 n-gon check, K_m vs CORE; 2D templated
-#               vs conventional generation, docs/benchmarks/2d.md)
+#               vs conventional generation, docs/benchmarks/2d.md; 3D n-TSVs vs TetGen on the
+#               whole geometry, docs/benchmarks/3d.md)
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
@@ -34,6 +35,7 @@ bench: deps
 	bash bench/run_rotation_composition.sh $(BENCH_BUILD)/bench/bench_rotation_composition docs/benchmarks
 	bash bench/run_lemma42_ngon.sh $(BENCH_BUILD)/bench/bench_lemma42_ngon docs/benchmarks
 	/usr/bin/python3 bench/generate_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
+	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

@@ -471,10 +471,11 @@ FT carrier_volume(const core::ElementComplex<FT, 3>& c) {
 }
 
 /// The conventional baseline of Section 7.1 in 3D (spec/generation.md#conventional-3d): the same
-/// mesher with the same switches on the whole geometry. The boundary of AT's instances — the
-/// templates' surface meshes placed by the instances and identified through the SVB, so every
-/// interface triangle appears once — is meshed by one TetGen call with a region seed inside each
-/// instance (-A); its boundary is checked to be that surface exactly (the adapter). The result is
+/// mesher with the same switches on the whole geometry. The boundaries of AT's regions — the
+/// templates' surface meshes placed by the instances and identified through the SVB; triangles
+/// between two instances of one region are left out, the whole-geometry mesher does not see the
+/// slices — are meshed by one TetGen call with a region seed inside each instance (-A); its
+/// boundary is checked to be that surface exactly (the adapter). The result is
 /// stored as one template per region, instanced once by the identity, whose shared TetGen vertices
 /// are the SVB tables; it is conforming by construction (one tetrahedralization), so the
 /// certificate is the adapter's boundary check.
@@ -500,27 +501,53 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
     for (auto [a, b] : r.templated.tables[std::size_t(id.table)].pairs)
       uf.unite(first[std::size_t(id.from_instance)] + std::size_t(a),
                first[std::size_t(id.to_instance)] + std::size_t(b));
-  SurfaceInput s;
-  std::vector<std::size_t> global(total, std::size_t(-1));
-  std::map<std::array<std::size_t, 3>, std::size_t> seen;
+  // Surface triangles by their classes' roots; an interface triangle of two instances of one
+  // region is no boundary of the whole geometry (the conventional mesher does not see the
+  // slices), so only triangles met once, or by instances of two regions, are kept.
+  struct Face {
+    std::array<std::size_t, 3> roots;
+    int region = 0, count = 0;
+    bool two_regions = false;
+  };
+  std::map<std::array<std::size_t, 3>, Face> faces;
+  std::vector<std::array<std::size_t, 3>> order;
   for (std::size_t a = 0; a < ids.size(); ++a) {
-    const auto& tb = boundaries[ids[a].i];
-    const auto& t = x.tf(ids[a]);
-    for (std::size_t v = 0; v < tb.exact.size(); ++v) {
-      const std::size_t root = uf.find(first[a] + v);
-      if (global[root] == std::size_t(-1)) {
-        global[root] = s.points.size();
-        const auto q = t(tb.exact[v]);
-        s.points.push_back({rounded(q[0]), rounded(q[1]), rounded(q[2])});
-      }
-    }
-    for (const auto& c : tb.triangles) {
+    const int region = int(x.instances[ids[a].i][ids[a].g].region);
+    for (const auto& c : boundaries[ids[a].i].triangles) {
       std::array<std::size_t, 3> g{};
-      for (int k = 0; k < 3; ++k) g[std::size_t(k)] = global[uf.find(first[a] + c[std::size_t(k)])];
-      std::array<std::size_t, 3> key = g;
+      for (int k = 0; k < 3; ++k) g[std::size_t(k)] = uf.find(first[a] + c[std::size_t(k)]);
+      auto key = g;
       std::sort(key.begin(), key.end());
-      if (seen.emplace(key, s.triangles.size()).second) s.triangles.push_back(g);
+      auto [it, fresh] = faces.emplace(key, Face{g, region, 0, false});
+      if (fresh) order.push_back(key);
+      ++it->second.count;
+      it->second.two_regions = it->second.two_regions || it->second.region != region;
     }
+  }
+  SurfaceInput s;
+  std::map<std::size_t, std::size_t> global; // class root -> surface point
+  std::map<std::size_t, std::size_t> owner;  // class root -> (instance, vertex) position
+  for (std::size_t a = 0; a < ids.size(); ++a)
+    for (std::size_t v = 0; v < boundaries[ids[a].i].exact.size(); ++v)
+      owner.emplace(uf.find(first[a] + v), first[a] + v);
+  const auto point_of = [&](std::size_t root) {
+    auto [it, fresh] = global.emplace(root, s.points.size());
+    if (fresh) {
+      const std::size_t flat = owner.at(root);
+      const std::size_t a =
+          std::size_t(std::upper_bound(first.begin(), first.end(), flat) - first.begin()) - 1;
+      const auto q = x.tf(ids[a])(boundaries[ids[a].i].exact[flat - first[a]]);
+      s.points.push_back({rounded(q[0]), rounded(q[1]), rounded(q[2])});
+    }
+    return it->second;
+  };
+  for (const auto& key : order) {
+    const auto& f = faces.at(key);
+    if (f.count > 1 && !f.two_regions) continue;
+    s.triangles.push_back({point_of(f.roots[0]), point_of(f.roots[1]), point_of(f.roots[2])});
+  }
+  for (std::size_t a = 0; a < ids.size(); ++a) {
+    const auto& t = x.tf(ids[a]);
     // A seed strictly inside the instance: the centroid of its carrier's first cell.
     const auto& carrier = x.templates[ids[a].i].mesh;
     for (const auto& e : carrier.elements) {
