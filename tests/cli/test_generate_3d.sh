@@ -75,14 +75,21 @@ cmp -s "$TMP/tsv8.vtu" "$TMP/tsv8_bpp.vtu" && pass "TSV: rotational and bpp writ
 # Every built-in 3D object (example --list, summary "3D ..."): auto (rotational) at a coarse
 # size, the same meshio checks with its own volume and boundary area.
 for name in $("$BIN" example --list | grep $'\t3D ' | cut -f1); do
-  n=${name#tsv-}
   "$BIN" example "$name" -o "$TMP/${name}_input.json"
-  read -r v a < <($PY -c "
+  case $name in
+    tsv-*)
+      read -r v a < <($PY -c "
 import math
-n, h, R, r = $n, 2.0, 1.0, 0.2
+n, h, R, r = ${name#tsv-}, 2.0, 1.0, 0.2
 area = lambda q: n / 2 * q * q * math.sin(2 * math.pi / n)
 perimeter = lambda q: 2 * n * q * math.sin(math.pi / n)
-print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))")
+print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))") ;;
+    # Surface of the union: substrate (bottom 12, sides 6 + 8, top 12 minus the fin's 1.2 and
+    # the gate's 1.6 footprints), fin (ends 2 x 0.24, sides 2 x 1.2 outside the gate, top 0.8),
+    # gate with oxide (top 2, sides 2 x 1, faces y = +-1/2: 2 x (2 - 0.24)).
+    finfet) v=14.48; a=$($PY -c "print((12 + 6 + 8 + 9.2) + (0.48 + 2.4 + 0.8) + (2 + 2 + 3.52))") ;;
+    *) fail "$name: no expected volume in this test"; continue ;;
+  esac
   generate "$name" "$TMP/${name}_input.json" "$v" "$a" auto msh
 done
 expect_exit 2 "3D mesh templates are refused (Algorithm 5.7 needs geometry templates)" -- \

@@ -296,6 +296,55 @@ J tsv(int n) {
   return d;
 }
 
+// ------------------------------------------------------------------------------ 3D: FinFET
+
+/// An axis-parallel box [x0,x1] x [y0,y1] x [z0,z1] as a geometry template (carrier: the 6
+/// tetrahedra around the diagonal from the first to the last corner).
+J box(const std::string& name, const std::array<std::string, 6>& b, const J& instances) {
+  J vertices = J::array();
+  for (int k = 0; k < 8; ++k)
+    vertices.push_back(J::array({b[std::size_t(k & 1)], b[std::size_t(2 + ((k >> 1) & 1))],
+                                 b[std::size_t(4 + ((k >> 2) & 1))]}));
+  const J cells =
+      J::array({J::array({0, 1, 3, 7}), J::array({0, 1, 5, 7}), J::array({0, 2, 3, 7}),
+                J::array({0, 2, 6, 7}), J::array({0, 4, 5, 7}), J::array({0, 4, 6, 7})});
+  return J{{"name", name},
+           {"kind", "geometry"},
+           {"vertices", vertices},
+           {"cells", cells},
+           {"instances", instances}};
+}
+
+/// A FinFET-like device with two orthogonal mirror planes (x = 0 across the fin, y = 0 along
+/// it): the quarter x, y >= 0 as six boxes — substrate (region 1), fin (2), gate oxide on the
+/// fin's side and top (3), gate on the side and across the top (4) — each instanced by the four
+/// copies I, refl(x = 0), refl(y = 0) and their composition (Algorithm 6.4). Rational.
+J finfet() {
+  const auto refl = [](const std::string& nx, const std::string& ny) {
+    return J{{"reflection", J{{"normal", J::array({nx, ny, "0"})}, {"offset", "0"}}}};
+  };
+  const auto copies = [&](int region) {
+    return J::array({instance(identity(), region), instance(refl("1", "0"), region),
+                     instance(refl("0", "1"), region),
+                     instance(compose(refl("1", "0"), refl("0", "1")), region)});
+  };
+  J d{{"symmesh", "templated-structure/1"},
+      {"dimension", 3},
+      {"description",
+       "FinFET-like device, two mirror planes x = 0 and y = 0: substrate [-2,2]x[-3/2,3/2]x[0,1] "
+       "(region 1), fin [-1/5,1/5]x[-3/2,3/2]x[1,8/5] (2), gate oxide 1/10 thick on the fin's "
+       "sides and top for |y| <= 1/2 (3), gate [-1,1]x[-1/2,1/2] around it up to z = 2 (4); the "
+       "quarter x, y >= 0 as six boxes, each instanced by the four mirror copies. Volume 14.48."},
+      {"templates",
+       J::array({box("substrate", {"0", "2", "0", "3/2", "0", "1"}, copies(1)),
+                 box("fin", {"0", "1/5", "0", "3/2", "1", "8/5"}, copies(2)),
+                 box("oxide_side", {"1/5", "3/10", "0", "1/2", "1", "17/10"}, copies(3)),
+                 box("oxide_top", {"0", "1/5", "0", "1/2", "8/5", "17/10"}, copies(3)),
+                 box("gate_side", {"3/10", "1", "0", "1/2", "1", "17/10"}, copies(4)),
+                 box("gate_top", {"0", "1", "0", "1/2", "17/10", "2"}, copies(4))})}};
+  return d;
+}
+
 struct Entry {
   std::string summary;
   std::function<J()> make;
@@ -323,6 +372,9 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
            {"3D open TSV, " + std::to_string(n) + "-gon prism, via lined by 2 layers, 3 regions, " +
                 std::to_string(n) + " slices",
             [n] { return tsv(n); }}});
+    v.push_back(
+        {"finfet",
+         {"3D FinFET-like device, 4 regions, two mirror planes (6 box templates x 4)", finfet}});
     v.push_back({"gear", {"12-tooth gear with a bore, whole (for cut --rotation 12)", gear}});
     v.push_back({"mosfet", {"MOSFET-like device, 4 regions, one mirror axis", mosfet}});
     v.push_back({"aircraft", {"aircraft-like outline, one mirror axis, sharp angles", aircraft}});
