@@ -4,6 +4,7 @@
 #pragma once
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/point.h"
+#include "symmesh/core/templated_structure.h"
 #include "symmesh/mesh/templated_mesh.h"
 #include "symmesh/number/cyclotomic.h"
 
@@ -53,6 +54,15 @@ double rounded(const FT& v) {
   if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
     return lo + (hi - lo) / 2;
   return CGAL::to_double(CGAL::exact(v));
+}
+
+/// A structure over K_m on Lazy_exact_nt<Cyclotomic> (spec/number-type.md#core-over-k-m): the
+/// generators' exact steps run on it, deciding on intervals first.
+template <int D>
+core::TemplatedStructure<LazyCyclotomic, D>
+lazily(const core::TemplatedStructure<number::Cyclotomic, D>& x) {
+  return core::convert_numbers<LazyCyclotomic>(
+      x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
 }
 
 /// An exact rigid transformation rounded for the templated mesh (x -> A x + b, row-major).

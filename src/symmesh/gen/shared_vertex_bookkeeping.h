@@ -11,6 +11,7 @@
 #pragma once
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/templated_structure.h"
+#include "symmesh/gen/generation_support.h"
 #include "symmesh/mesh/templated_mesh.h"
 #include "symmesh/mesh/union_find.h"
 
@@ -32,6 +33,41 @@ struct SvbCandidate {
   core::InstanceId from, to;
   std::shared_ptr<const SvbPairs> pairs;
 };
+
+/// The pairs a template boundary mapping identifies on the vertex and edge faces of its domain,
+/// from the automaton alone: each vertex with its image, and the k-th line-mesh point of an edge
+/// face with the k-th or (N-k)-th of its image (depending on where the edge's first vertex goes).
+/// `from_lines` / `to_lines`: the line meshes of the from- and to-template, per subdivision face.
+template <class FT, int D>
+void vertex_and_line_pairs(const core::BoundaryPatchPartition<FT, D>& bpp, std::size_t letter,
+                           const std::vector<FaceLine>& from_lines,
+                           const std::vector<FaceLine>& to_lines, SvbPairs& pairs) {
+  const auto& m = bpp.mappings[letter];
+  const auto& src = bpp.subdivisions[m.from_template()];
+  const auto& dst = bpp.subdivisions[m.to_template()];
+  // Vertex faces first in the list, so the image of an edge's first vertex is known.
+  std::map<std::size_t, std::size_t> vertex_image;
+  for (auto [f, g] : bpp.letter_action[letter])
+    if (src.faces[f].dimension == 0) {
+      vertex_image[src.faces[f].vertices[0]] = dst.faces[g].vertices[0];
+      pairs.emplace_back(mesh::IndexType(src.faces[f].vertices[0]),
+                         mesh::IndexType(dst.faces[g].vertices[0]));
+    }
+  for (auto [f, g] : bpp.letter_action[letter]) {
+    const auto& face = src.faces[f];
+    if (face.dimension != 1) continue;
+    const auto& lf = from_lines[f];
+    const auto& lg = to_lines[g];
+    if (lf.n != lg.n) throw std::logic_error("SVB: a mapping joins faces of different line meshes");
+    const auto it = vertex_image.find(face.vertices[0]);
+    if (it == vertex_image.end())
+      throw std::logic_error("SVB: a mapping applies to an edge but not to its end");
+    const bool same_direction = it->second == dst.faces[g].vertices[0];
+    for (std::size_t k = 1; k < lf.n; ++k)
+      pairs.emplace_back(mesh::IndexType(lf.first + k - 1),
+                         mesh::IndexType(lg.first + (same_direction ? k - 1 : lf.n - k - 1)));
+  }
+}
 
 /// The BPP's mappings between distinct instances, one direction each (the inverse is a mapping
 /// too). `rotations` > 0 (the rotational method): the BPP was computed on the first two rotated

@@ -279,38 +279,17 @@ SvbPairs mapping_pairs_3(const core::BoundaryPatchPartition<FT, 3>& bpp, std::si
                          const std::vector<SurfaceBoundary<FT>>& boundaries) {
   const auto& m = bpp.mappings[letter];
   const std::size_t j = m.from_template(), i = m.to_template();
-  const auto& src = bpp.subdivisions[j];
-  const auto& dst = bpp.subdivisions[i];
   SvbPairs pairs;
-  std::map<std::size_t, std::size_t> vertex_image;
-  for (auto [f, g] : bpp.letter_action[letter])
-    if (src.faces[f].dimension == 0) {
-      vertex_image[src.faces[f].vertices[0]] = dst.faces[g].vertices[0];
-      pairs.emplace_back(mesh::IndexType(src.faces[f].vertices[0]),
-                         mesh::IndexType(dst.faces[g].vertices[0]));
-    }
+  support::vertex_and_line_pairs<FT, 3>(bpp, letter, boundaries[j].lines, boundaries[i].lines,
+                                        pairs);
   for (auto [f, g] : bpp.letter_action[letter]) {
-    const auto& face = src.faces[f];
-    if (face.dimension == 1) {
-      const auto& lf = boundaries[j].lines[f];
-      const auto& lg = boundaries[i].lines[g];
-      if (lf.n != lg.n)
-        throw std::logic_error("Algorithm 5.7: a mapping joins faces of different line meshes");
-      const auto it = vertex_image.find(face.vertices[0]);
-      if (it == vertex_image.end())
-        throw std::logic_error("Algorithm 5.7: a mapping applies to an edge but not to its end");
-      const bool same_direction = it->second == dst.faces[g].vertices[0];
-      for (std::size_t k = 1; k < lf.n; ++k)
-        pairs.emplace_back(mesh::IndexType(lf.first + k - 1),
-                           mesh::IndexType(lg.first + (same_direction ? k - 1 : lf.n - k - 1)));
-    } else if (face.dimension == 2) {
-      const std::size_t n = boundaries[j].facet_count[f];
-      if (n != boundaries[i].facet_count[g])
-        throw std::logic_error("Algorithm 5.7: a mapping joins faces of different surface meshes");
-      for (std::size_t k = 0; k < n; ++k)
-        pairs.emplace_back(mesh::IndexType(boundaries[j].facet_first[f] + k),
-                           mesh::IndexType(boundaries[i].facet_first[g] + k));
-    }
+    if (bpp.subdivisions[j].faces[f].dimension != 2) continue;
+    const std::size_t n = boundaries[j].facet_count[f];
+    if (n != boundaries[i].facet_count[g])
+      throw std::logic_error("Algorithm 5.7: a mapping joins faces of different surface meshes");
+    for (std::size_t k = 0; k < n; ++k)
+      pairs.emplace_back(mesh::IndexType(boundaries[j].facet_first[f] + k),
+                         mesh::IndexType(boundaries[i].facet_first[g] + k));
   }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
@@ -773,11 +752,7 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
   return r;
 }
 
-core::TemplatedStructure<LazyCyclotomic, 3>
-lazily(const core::TemplatedStructure<number::Cyclotomic, 3>& x) {
-  return core::convert_numbers<LazyCyclotomic>(
-      x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
-}
+using support::lazily;
 
 template <class FT>
 CellEstimate estimate_3(const core::TemplatedStructure<FT, 3>& x, double size) {

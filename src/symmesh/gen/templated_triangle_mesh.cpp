@@ -126,34 +126,9 @@ std::vector<std::pair<mesh::IndexType, mesh::IndexType>>
 mapping_pairs(const core::BoundaryPatchPartition<FT, 2>& bpp, std::size_t letter,
               const std::vector<TemplateBoundary<FT>>& boundaries) {
   const auto& m = bpp.mappings[letter];
-  const std::size_t j = m.from_template(), i = m.to_template();
-  const auto& src = bpp.subdivisions[j];
-  const auto& dst = bpp.subdivisions[i];
-  std::vector<std::pair<mesh::IndexType, mesh::IndexType>> pairs;
-  // The automaton's own transitions (no arithmetic): vertex faces first in the list, so the
-  // image of an edge's first vertex is known when the edge comes.
-  std::map<std::size_t, std::size_t> vertex_image;
-  for (auto [f, g] : bpp.letter_action[letter])
-    if (src.faces[f].dimension == 0) {
-      vertex_image[src.faces[f].vertices[0]] = dst.faces[g].vertices[0];
-      pairs.emplace_back(mesh::IndexType(src.faces[f].vertices[0]),
-                         mesh::IndexType(dst.faces[g].vertices[0]));
-    }
-  for (auto [f, g] : bpp.letter_action[letter]) {
-    const auto& face = src.faces[f];
-    if (face.dimension != 1) continue;
-    const auto& lf = boundaries[j].lines[f];
-    const auto& lg = boundaries[i].lines[g];
-    if (lf.n != lg.n)
-      throw std::logic_error("Algorithm 5.6: a mapping joins faces of different line meshes");
-    const auto it = vertex_image.find(face.vertices[0]);
-    if (it == vertex_image.end())
-      throw std::logic_error("Algorithm 5.6: a mapping applies to an edge but not to its end");
-    const bool same_direction = it->second == dst.faces[g].vertices[0];
-    for (std::size_t k = 1; k < lf.n; ++k)
-      pairs.emplace_back(mesh::IndexType(lf.first + k - 1),
-                         mesh::IndexType(lg.first + (same_direction ? k - 1 : lf.n - k - 1)));
-  }
+  SvbPairs pairs;
+  support::vertex_and_line_pairs<FT, 2>(bpp, letter, boundaries[m.from_template()].lines,
+                                        boundaries[m.to_template()].lines, pairs);
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
@@ -861,11 +836,7 @@ core::TemplatedStructure<FT, 2> sao_cut(const core::TemplatedStructure<FT, 2>& x
   return out;
 }
 
-core::TemplatedStructure<LazyCyclotomic, 2>
-lazily(const core::TemplatedStructure<number::Cyclotomic, 2>& x) {
-  return core::convert_numbers<LazyCyclotomic>(
-      x, [](const number::Cyclotomic& v) { return LazyCyclotomic(v); });
-}
+using support::lazily;
 
 template <class FT>
 GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method method,
