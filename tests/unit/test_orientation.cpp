@@ -77,7 +77,7 @@ gen::GenerationResult generate(const AnyStructure2& x, gen::Method method, doubl
   return std::visit(
       [&](const auto& s) {
         gen::GenerationOptions o;
-        o.size = std::sqrt(gen::estimate_cells(s, 1.0).area / (0.2 * cells));
+        o.size = std::sqrt(gen::estimate_cells(s, 1.0).measure / (0.2 * cells));
         o.min_angle_deg = 20;
         return gen::generate_triangle_mesh(s, method, o);
       },
@@ -85,7 +85,7 @@ gen::GenerationResult generate(const AnyStructure2& x, gen::Method method, doubl
 }
 
 double area_of(const AnyStructure2& x) {
-  return std::visit([](const auto& s) { return gen::estimate_cells(s, 1.0).area; }, x);
+  return std::visit([](const auto& s) { return gen::estimate_cells(s, 1.0).measure; }, x);
 }
 
 std::string slurp(const std::string& path) {

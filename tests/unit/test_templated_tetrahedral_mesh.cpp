@@ -156,8 +156,8 @@ TEST(TetrahedralGeneration, GeometryTemplatesAndPositiveSizeRequired) {
 
 TEST(TetrahedralGeneration, CellEstimateIsTheExactVolume) {
   const auto e = gen::estimate_cells(fixture("rotational_slice_3d.json"), 0.1);
-  EXPECT_DOUBLE_EQ(e.area, 4.0);
-  EXPECT_GT(e.triangles, 1000.0);
+  EXPECT_DOUBLE_EQ(e.measure, 4.0);
+  EXPECT_GT(e.cells, 1000.0);
 }
 
 } // namespace

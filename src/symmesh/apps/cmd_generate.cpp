@@ -84,17 +84,16 @@ struct InfeasibleSize : std::runtime_error {
 };
 
 /// Refuses, before any work, a --size that would give more cells than --max-cells.
-/// In 3D the estimate's `area` is the volume and `triangles` the tetrahedra.
-void refuse_infeasible_size(const gen::CellEstimate& e, const GenerateOptions& o, int dimension) {
+void refuse_infeasible_size(const gen::CellEstimate& e, const GenerateOptions& o) {
   const bool by_default = o.max_cells == 0;
   const double limit = by_default ? default_max_cells() : o.max_cells;
-  if (e.triangles <= limit) return;
+  if (e.cells <= limit) return;
   throw InfeasibleSize(
       "--size " + round_text(o.size) + ": the structure instance would have about " +
-      round_text(e.triangles) +
-      (dimension == 2
-           ? " triangles (area " + round_text(e.area) + " at about 0.2·size² per triangle)"
-           : " tetrahedra (volume " + round_text(e.area) + " at about 2 per size³/(6√2))") +
+      round_text(e.cells) +
+      (e.dimension == 2
+           ? " triangles (area " + round_text(e.measure) + " at about 0.2·size² per triangle)"
+           : " tetrahedra (volume " + round_text(e.measure) + " at about 2 per size³/(6√2))") +
       ", above the limit of " + round_text(limit) +
       (by_default
            ? " (" + round_text(physical_memory_bytes() / double(1ull << 30)) + " GiB of memory / " +
@@ -179,11 +178,7 @@ int run_generate(const GenerateOptions& o) {
     const auto x = io::read_templated_structure(o.file);
     r = std::visit(
         [&](const auto& s) -> gen::GenerationResult {
-          using S = std::decay_t<decltype(s)>;
-          constexpr int dimension =
-              std::is_same_v<S, io::Structure2> || std::is_same_v<S, io::CyclotomicStructure2> ? 2
-                                                                                               : 3;
-          refuse_infeasible_size(gen::estimate_cells(s, o.size), o, dimension);
+          refuse_infeasible_size(gen::estimate_cells(s, o.size), o);
           return run_method(s, o, g);
         },
         x);

@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -48,7 +47,10 @@ P3<FT> cross(const P3<FT>& a, const P3<FT>& b) {
   return c;
 }
 
-/// The k-th of the n + 1 points of the uniform line mesh of [a, b], exactly.
+/// The k-th of the n + 1 points of the uniform line mesh of [a, b], exactly: the value of
+/// core::line_mesh_point, written as one product so that its interval enclosure, which rounded()
+/// reads, is the one the 3D outputs were made with (another expression of the same value may
+/// round to a neighbouring double and change the mesh).
 template <class FT>
 P3<FT> line_point(const P3<FT>& a, const P3<FT>& b, std::size_t k, std::size_t n) {
   if (k == 0) return a;
@@ -57,7 +59,8 @@ P3<FT> line_point(const P3<FT>& a, const P3<FT>& b, std::size_t k, std::size_t n
 }
 
 /// Tetrahedra TetGen makes per volume bound (-a) of volume, at the default radius-edge bound:
-/// measured on the cube examples (spec/generation.md#cell-estimate).
+/// measured on the rotational slices of data/rotational_slice_3d.json
+/// (spec/generation.md#cell-estimate).
 constexpr double kTetrahedraPerVolumeBound = 2.0;
 
 /// Template t's boundary mesh: every boundary point exactly in local ids (subdivision points,
@@ -760,8 +763,9 @@ CellEstimate estimate_3(const core::TemplatedStructure<FT, 3>& x, double size) {
   for (std::size_t i = 0; i < x.templates.size(); ++i)
     volume += carrier_volume(x.templates[i].mesh) * FT(int(x.instances[i].size()));
   CellEstimate e;
-  e.area = rounded(volume);
-  e.triangles = e.area / volume_bound(size) * kTetrahedraPerVolumeBound;
+  e.dimension = 3;
+  e.measure = rounded(volume);
+  e.cells = e.measure / volume_bound(size) * kTetrahedraPerVolumeBound;
   return e;
 }
 } // namespace

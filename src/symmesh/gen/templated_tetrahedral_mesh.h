@@ -34,8 +34,7 @@ GenerationResult generate_tetrahedral_mesh(const core::TemplatedStructure<number
                                            Method method, const GenerationOptions& options);
 
 /// The volume of AT(X) (exact, rounded once) and the number of tetrahedra TetGen makes of it at
-/// `size` (spec/generation.md#cell-estimate). In CellEstimate, `area` holds the volume and
-/// `triangles` the tetrahedra.
+/// `size` (spec/generation.md#cell-estimate).
 CellEstimate estimate_cells(const core::TemplatedStructure<Exact, 3>& x, double size);
 CellEstimate estimate_cells(const core::TemplatedStructure<number::Cyclotomic, 3>& x, double size);
 

@@ -905,8 +905,8 @@ CellEstimate estimate(const core::TemplatedStructure<FT, 2>& x, double size) {
   for (std::size_t i = 0; i < x.templates.size() && i < x.instances.size(); ++i)
     area += carrier_area(x.templates[i].mesh) * FT(int(x.instances[i].size()));
   CellEstimate e;
-  e.area = rounded(area);
-  e.triangles = e.area / (kTriangleAreaPerSize2 * size * size);
+  e.measure = rounded(area);
+  e.cells = e.measure / (kTriangleAreaPerSize2 * size * size);
   return e;
 }
 

@@ -102,8 +102,11 @@ GenerationResult generate_triangle_mesh(const core::TemplatedStructure<number::C
 /// measured on the n-gon slices (961 408 triangles of the 128-gon at size 0.003963, where the
 /// formula gives 999 800) — spec/generation.md#cell-estimate. Used to refuse an infeasible
 /// --size before any work.
+/// In 3D (templated_tetrahedral_mesh.h) the measure is the volume and the cells are tetrahedra.
 struct CellEstimate {
-  double area = 0, triangles = 0;
+  int dimension = 2;
+  double measure = 0; ///< area (2D) or volume (3D) of AT(X)
+  double cells = 0;   ///< triangles (2D) or tetrahedra (3D)
 };
 CellEstimate estimate_cells(const core::TemplatedStructure<Exact, 2>& x, double size);
 CellEstimate estimate_cells(const core::TemplatedStructure<number::Cyclotomic, 2>& x, double size);

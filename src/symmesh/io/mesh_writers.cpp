@@ -438,8 +438,9 @@ void write_msh41(const mesh::StructureInstance& at, const std::string& path,
       w.integer(gmsh_type);
       w.size(count);
       w.end_row();
+      const int block = region; // a structured binding cannot be captured before clang 16
       at.for_each_cell([&](const auto& in, std::size_t c, const std::array<mesh::IndexType, 4>& v) {
-        if (int(in.region) != region) return;
+        if (int(in.region) != block) return;
         w.size(tag++);
         for (int q = 0; q < mesh::vertex_count(in.mesh_template->mesh.cell_types[c]); ++q)
           w.size(std::uint64_t(v[std::size_t(q)]) + 1);
