@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # symmesh generate on 3D templated geometries (spec/generation.md#alg-5-7): Algorithm 5.7 (bpp)
-# and the conventional baseline (TetGen on the regions of AT), written as binary .vtu, .msh and
+# and the conventional baseline (TetGen on the regions of AT), on carrier and PLC input, written as binary .vtu, .msh and
 # .mesh, read back by meshio (cell count as reported, every triangle in at most two tetrahedra,
 # closed boundary, boundary area of the union (a non-conforming interface would add to it), no
 # duplicate vertex, positive volumes, exact volume), .msh opened by gmsh, byte-identical reruns,
@@ -29,6 +29,13 @@ generate halves_msh data/cube_mirrored_halves_3d.json 2 10 bpp msh
 generate slices data/rotational_slice_3d.json 4 16 bpp vtu
 generate slices_mesh data/rotational_slice_3d.json 4 16 auto mesh
 generate slices_conventional data/rotational_slice_3d.json 4 16 conventional vtu
+# A PLC input (polygonal faces, two with a hole): the carrier is tetrahedralized internally.
+generate tunnel data/tunnel_boxes_3d.json 6 32 bpp vtu
+expect_exit 2 "a PLC with a missing face is refused naming a face" -- \
+  "$BIN" generate tests/data/bad/open_plc_3d.json --size 0.15 -o "$TMP/open.vtu"
+grep -q "templates\[0\].faces\[[0-9]*\]: the surface is not closed" "$TMP/stderr" \
+  || fail "the open-PLC message names the face"
+[ ! -e "$TMP/open.vtu" ] || fail "a refused PLC left a file"
 
 # Only the templates are meshed: the four slices cost one slice's tetrahedra.
 $PY -c "import json,sys; r=json.load(open(sys.argv[1])); c=json.load(open(sys.argv[2])); \

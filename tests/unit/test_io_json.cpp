@@ -3,6 +3,7 @@
 // Exact number parsing, the transformation forms and their semantics, polygon triangulation,
 // round trips parse(to_json(x)) == x, one test per class of bad input (each error names the
 // field by its JSON path), and the core::analyse verdicts of the fixtures in data/.
+#include "symmesh/core/linear_algebra.h"
 #include "symmesh/core/structure_report.h"
 #include "symmesh/io/templated_structure_json.h"
 
@@ -523,6 +524,116 @@ TEST(IoJsonPolygon, RejectsBadPolygons) {
                "templates[0].holes: ", "needs \"polygon\"");
   EXPECT_ERROR(geometry(R"("polygon": [[0,0],[1,0],["inf",1]])"),
                "templates[0].polygon[2][0]: ", "not allowed");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3D geometry templates given as a PLC (vertices + polygonal faces), spec/input-format.md#plc
+
+const std::string kCubeVertices =
+    R"("vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],[0,1,1]])";
+const std::string kCubeFaces = R"([0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7])";
+
+std::string solid(const std::string& vertices, const std::string& faces) {
+  return doc(R"("name": "P", "kind": "geometry", )" + vertices + R"(, "faces": [)" + faces + "], " +
+                 kIdentity,
+             3);
+}
+
+/// Sum of |det|/6 over the tetrahedra: the exact volume of a carrier.
+template <class FT>
+FT volume_of(const core::ElementComplex<FT, 3>& m) {
+  FT v(0);
+  for (const auto& c : m.cells()) {
+    const auto p = m.coords(c);
+    core::Matrix<FT> a(3, std::vector<FT>(3));
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k)
+        a[std::size_t(r)][std::size_t(k)] = p[std::size_t(r + 1)][k] - p[0][k];
+    const FT d = core::determinant(a);
+    v += (d < FT(0) ? -d : d) / FT(6);
+  }
+  return v;
+}
+
+TEST(IoJsonPlc, BoxWithATunnelIsTetrahedralizedExactly) {
+  // Two faces with a hole; the carrier's underlying space is the solid, volume 2*2*1 - 1*1*1.
+  const auto s = io::parse_templated_structure(solid(
+      R"("vertices": [[0,0,0],[2,0,0],[2,2,0],[0,2,0],[0,0,1],[2,0,1],[2,2,1],[0,2,1],
+        ["1/2","1/2",0],["3/2","1/2",0],["3/2","3/2",0],["1/2","3/2",0],
+        ["1/2","1/2",1],["3/2","1/2",1],["3/2","3/2",1],["1/2","3/2",1]])",
+      R"({"polygon": [0,1,2,3], "holes": [[8,9,10,11]]}, {"polygon": [4,5,6,7], "holes": [[12,13,14,15]]},
+        [0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7],[8,9,13,12],[9,10,14,13],[10,11,15,14],[11,8,12,15])"));
+  const auto& x = std::get<io::Structure3>(s);
+  const auto& m = x.templates[0].mesh;
+  EXPECT_EQ(x.templates[0].kind, core::TemplateKind::geometry);
+  EXPECT_TRUE(m.points[9] == pt<3>({q(3, 2), q(1, 2), 0})); // input order is kept
+  EXPECT_TRUE(volume_of(m) == Exact(3)) << io::exact_to_string(volume_of(m));
+  EXPECT_TRUE(core::is_mesh(m));
+  // The carrier boundary is the triangulated faces: 8+8 (holed faces) + 8*2 (quads) triangles.
+  EXPECT_EQ(core::mesh_boundary(m).cells().size(), 32u);
+  const auto r = analyse_any(s);
+  EXPECT_TRUE(r.well_formed) << r.error;
+  EXPECT_TRUE(r.templated_geometry);
+}
+
+TEST(IoJsonPlc, CavityIsLeftOutAndCyclotomicFacesAreExact) {
+  // A cube with a closed inner shell (a cavity): the carrier has the cavity's volume removed.
+  const auto c = io::parse_templated_structure(solid(
+      R"("vertices": [[0,0,0],[4,0,0],[4,4,0],[0,4,0],[0,0,4],[4,0,4],[4,4,4],[0,4,4],
+        [1,1,1],[2,1,1],[2,2,1],[1,2,1],[1,1,2],[2,1,2],[2,2,2],[1,2,2]])",
+      R"([0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7],
+        [8,11,10,9],[12,13,14,15],[8,9,13,12],[9,10,14,13],[10,11,15,14],[11,8,12,15])"));
+  EXPECT_TRUE(volume_of(std::get<io::Structure3>(c).templates[0].mesh) == Exact(63));
+  // A wedge of angle 2pi/8 in K_8: its volume is sin(2pi/8)/2 exactly.
+  const auto w = io::parse_templated_structure(solid(
+      R"x("vertices": [[0,0,0],[1,0,0],["cos(2pi/8)","sin(2pi/8)",0],[0,0,1],[1,0,1],["cos(2pi/8)","sin(2pi/8)",1]])x",
+      R"([0,2,1],[3,4,5],[0,1,4,3],[1,2,5,4],[2,0,3,5])"));
+  const auto& m = std::get<io::CyclotomicStructure3>(w).templates[0].mesh;
+  EXPECT_TRUE(volume_of(m) == m.points[2][1] / io::Cyclotomic(2));
+}
+
+TEST(IoJsonPlc, RejectsBadPlcsNamingTheFace) {
+  EXPECT_ERROR(solid(kCubeVertices, R"([0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6])"),
+               "templates[0].faces[", "not closed");
+  EXPECT_ERROR(solid(kCubeVertices, kCubeFaces + R"(, [0,1,6,7])"), "templates[0].faces[",
+               "not manifold");
+  EXPECT_ERROR(
+      solid(
+          R"("vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,"11/10"],[0,1,1]])",
+          kCubeFaces),
+      "templates[0].faces[1][3]: ", "not planar");
+  EXPECT_ERROR(
+      solid(
+          R"("vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],[0,1,1],[2,0,0]])",
+          kCubeFaces + R"(, [0,1,8])"),
+      "templates[0].faces[6]: ", "zero area");
+  EXPECT_ERROR(
+      solid(kCubeVertices, R"([0,2,3,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7])"),
+      "templates[0].faces[0]: ", "self-intersecting");
+  // Two tetrahedra that cross each other in one template.
+  EXPECT_ERROR(
+      solid(
+          R"("vertices": [[0,0,0],[2,0,0],[0,2,0],[0,0,2],["1/2","1/2","1/2"],["5/2","1/2","1/2"],["1/2","5/2","1/2"],["1/2","1/2","5/2"]])",
+          R"([0,2,1],[0,1,3],[1,2,3],[0,3,2],[4,6,5],[4,5,7],[5,6,7],[4,7,6])"),
+      "templates[0].faces[", "intersect");
+  EXPECT_ERROR(
+      solid(kCubeVertices, R"([0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7,3])"),
+      "templates[0].faces[5][4]: ", "appears twice");
+  EXPECT_ERROR(
+      solid(kCubeVertices, R"([0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,9])"),
+      "templates[0].faces[5][3]: ", "out of range");
+  EXPECT_ERROR(
+      solid(
+          R"("vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],[0,1,1],[5,5,5]])",
+          kCubeFaces),
+      "templates[0].vertices[8]: ", "not used by any face");
+  EXPECT_ERROR(doc(kCubeVertices + R"(, "faces": [)" + kCubeFaces + "], " + kIdentity, 3),
+               "templates[0].faces: ", "geometry");
+  EXPECT_ERROR(doc(R"("kind": "geometry", "vertices": [[0,0],[1,0],[0,1]], "faces": [[0,1,2]], )" +
+                   kIdentity),
+               "templates[0].faces: ", "3D");
+  EXPECT_ERROR(solid(kCubeVertices, kCubeFaces + R"(], "cells": [[0,1,2,4])"),
+               "templates[0]: ", "not both");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -96,11 +96,12 @@ std::string tetgen_switches(const TetrahedralMeshingParameters& p, bool with_reg
   return buf;
 }
 
-TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
-  check_input(s, p);
+namespace {
+/// TetGen on `s` with `switches`, its output checked: input points kept in order, tetrahedra
+/// positive, boundary = the input surface.
+TetrahedralMeshOutput run_tetgen(const SurfaceInput& s, std::string switches) {
   tetgenio in, out;
   fill_input(s, in);
-  std::string switches = tetgen_switches(p, !s.seeds.empty());
   tetgenbehavior behaviour;
   if (!behaviour.parse_commandline(switches.data()))
     throw std::logic_error("TetGen refused the switches " + switches);
@@ -147,6 +148,17 @@ TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& s, const TetrahedralMesh
     throw MeshingError(why.str());
   }
   return m;
+}
+} // namespace
+
+TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
+  check_input(s, p);
+  return run_tetgen(s, tetgen_switches(p, !s.seeds.empty()));
+}
+
+TetrahedralMeshOutput tetrahedralize_surface(const SurfaceInput& s) {
+  check_input(s, TetrahedralMeshingParameters{1, 2});
+  return run_tetgen(s, "pYzQ");
 }
 
 std::optional<std::size_t> boundary_mismatch(const SurfaceInput& s,

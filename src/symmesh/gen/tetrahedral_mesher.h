@@ -58,6 +58,10 @@ std::string tetgen_switches(const TetrahedralMeshingParameters& p, bool with_reg
 TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& surface,
                                     const TetrahedralMeshingParameters& p);
 
+/// TetGen -pY without refinement: a tetrahedralization of the solid the closed surface bounds
+/// (cavities included), no point added on the surface, checked like mesh_domain_3. For carriers.
+TetrahedralMeshOutput tetrahedralize_surface(const SurfaceInput& surface);
+
 /// The first input triangle that is not a boundary face of `m` exactly (by vertex ids), or the
 /// first boundary face of `m` that is no input triangle (reported as an index past the input's
 /// triangles), or nothing when the boundary is the input surface. A boundary face is a face of
