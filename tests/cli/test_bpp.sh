@@ -109,7 +109,8 @@ m, b = meshio.read(sys.argv[1]), json.load(open(sys.argv[2]))
 cells = sum(len(c.data) for c in m.cells)
 faces = sum(p["faces"] for p in b["patches"])
 simplices = sum(len(p["simplices"]) for p in b["patches"])
-assert cells == faces == simplices, (cells, faces, simplices)
+# a 3D 2-face may be several triangles (a flat region of the carrier, spec/boundary-patches.md)
+assert cells == simplices and faces <= simplices, (cells, faces, simplices)
 for k in ("template", "patch", "class", "dimension"):
     assert k in m.cell_data, k
 assert set(c.type for c in m.cells) <= {"vertex", "line", "triangle"}
@@ -118,7 +119,7 @@ classes = {int(p) : int(k) for ps, ks in zip(m.cell_data["patch"], m.cell_data["
 assert all(classes[p["id"]] == p["class"] for p in b["patches"])
 assert len(m.points) == b["subdivision_vertices"]
 PY
-  then pass "$name: meshio reads the .vtu; cells = JSON faces; patch/class data agree"
+  then pass "$name: meshio reads the .vtu; cells = JSON simplices; patch/class data agree"
   else fail "$name: .vtu read back"; fi
   if [ "$($PY -c "import json; print(json.load(open('$TMP/$name.json'))['dimension'])")" = 2 ]; then
     expect_exit 0 "$name: -o .svg" -- "$BIN" bpp "$f" -o "$TMP/$name.svg"

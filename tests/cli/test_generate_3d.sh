@@ -9,10 +9,10 @@
 source "$(dirname "$0")/common.sh" "$@"
 PY=/usr/bin/python3
 
-# generate NAME FILE VOLUME SURFACE METHOD EXT
+# generate NAME FILE VOLUME SURFACE METHOD EXT [SIZE]
 generate() {
-  local name=$1 file=$2 volume=$3 surface=$4 method=$5 ext=$6 out="$TMP/$1.$6"
-  if ! "$BIN" generate "$file" --size 0.15 --method "$method" -o "$out" \
+  local name=$1 file=$2 volume=$3 surface=$4 method=$5 ext=$6 size=${7:-0.15} out="$TMP/$1.$6"
+  if ! "$BIN" generate "$file" --size "$size" --method "$method" -o "$out" \
       --report "$TMP/$name.json" 2> "$TMP/err"; then
     fail "$name: generate failed"; sed 's/^/  | /' "$TMP/err"; return; fi
   grep -q "symmesh generate: .*\[.* s\]" "$TMP/err" || fail "$name: no progress line on stderr"
@@ -95,9 +95,16 @@ print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + per
     # the gate's 1.6 footprints), fin (ends 2 x 0.24, sides 2 x 1.2 outside the gate, top 0.8),
     # gate with oxide (top 2, sides 2 x 1, faces y = +-1/2: 2 x (2 - 0.24)).
     finfet) v=14.48; a=$($PY -c "print((12 + 6 + 8 + 9.2) + (0.48 + 2.4 + 0.8) + (2 + 2 + 3.52))") ;;
+    # Block [-3,3]^2 x [0,2] minus the four open vias (8-gons of circumradius 1/5).
+    multi-tsv) read -r v a < <($PY -c "
+import math
+area, perimeter = 4 * 0.04 * math.sin(math.pi / 4), 16 * 0.2 * math.sin(math.pi / 8)
+print(72 - 4 * 2 * area, 120 - 8 * area + 4 * 2 * perimeter)") ;;
+    cube-halves) v=2; a=10 ;;
     *) fail "$name: no expected volume in this test"; continue ;;
   esac
-  generate "$name" "$TMP/${name}_input.json" "$v" "$a" auto msh
+  size=0.15; [ "$name" = multi-tsv ] && size=0.3
+  generate "$name" "$TMP/${name}_input.json" "$v" "$a" auto msh "$size"
 done
 expect_exit 2 "3D mesh templates are refused (Algorithm 5.7 needs geometry templates)" -- \
   "$BIN" generate data/reflected_cube_3d.json --size 0.15 -o "$TMP/mt.vtu"

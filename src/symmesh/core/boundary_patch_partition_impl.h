@@ -478,6 +478,45 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
                                          CGAL::Constrained_triangulation_face_base_2<KernelOf<FT>>>,
     CGAL::Exact_intersections_tag>;
 
+/// The flat regions of a closed boundary: maximal sets of boundary triangles connected across
+/// edges shared by two coplanar triangles, each sorted, in order of their first triangle. A
+/// carrier's diagonals inside a flat face are not features of the geometry (Definition 4.4: only
+/// the underlying space counts), so the subdivision must not cut along them; otherwise every
+/// surface mesh would have to follow them and inherit their small angles.
+template <class FT>
+std::vector<std::vector<std::size_t>> flat_regions(const std::vector<PointVec<FT, 3>>& tris) {
+  std::vector<std::size_t> parent(tris.size());
+  for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
+  const auto find = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  std::map<std::pair<Point<FT, 3>, Point<FT, 3>>, std::vector<std::size_t>, std::less<>> by_edge;
+  for (std::size_t k = 0; k < tris.size(); ++k)
+    for (int e = 0; e < 3; ++e) {
+      Point<FT, 3> a = tris[k][std::size_t(e)], b = tris[k][std::size_t((e + 1) % 3)];
+      if (PointLess<FT, 3>()(b, a)) std::swap(a, b);
+      by_edge[{a, b}].push_back(k);
+    }
+  for (const auto& [edge, ks] : by_edge) {
+    if (ks.size() != 2) continue;
+    const auto& x = tris[ks[0]];
+    const auto& y = tris[ks[1]];
+    const Point<FT, 3> n = cross3<FT>(x[1] - x[0], x[2] - x[0]);
+    bool coplanar = true;
+    for (const auto& q : y) coplanar = coplanar && dot<FT, 3>(n, q - x[0]) == FT(0);
+    if (coplanar) parent[find(ks[0])] = find(ks[1]);
+  }
+  std::map<std::size_t, std::size_t> index_of_root;
+  std::vector<std::vector<std::size_t>> regions;
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    const auto [it, fresh] = index_of_root.emplace(find(k), regions.size());
+    if (fresh) regions.emplace_back();
+    regions[it->second].push_back(k);
+  }
+  return regions;
+}
+
 template <class FT>
 BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3>>& tris,
                                                 const Cuts<FT>& cuts) {
@@ -493,46 +532,74 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
     return q;
   };
   using VertexHandle = typename Cdt<FT>::Vertex_handle;
-  std::vector<Cdt<FT>> cdts(tris.size());
-  std::vector<std::map<VertexHandle, Point<FT, 3>>> lifted(tris.size());
-  std::vector<PlaneFrame<FT>> frames;
+  using FaceHandle = typename Cdt<FT>::Face_handle;
+  // One constrained triangulation per flat region, in the region's plane: its outline (edges
+  // in one of its triangles) and the cuts are constraints, the carrier's inner edges are not.
+  const auto regions = flat_regions<FT>(tris);
+  std::vector<Cdt<FT>> cdts(regions.size());
+  std::vector<std::map<VertexHandle, Point<FT, 3>>> lifted(regions.size());
+  std::vector<std::set<FaceHandle>> inside(regions.size());
   PointSet<FT, 3> all;
-  for (std::size_t k = 0; k < tris.size(); ++k) {
-    const auto& tri = tris[k];
-    frames.emplace_back(tri);
-    const auto& fr = frames.back();
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const PlaneFrame<FT> fr(tris[regions[k].front()]);
     auto proj = [&](const Point<FT, 3>& p) { return P2(p[fr.u], p[fr.v]); };
     auto& cdt = cdts[k];
-    for (int e = 0; e < 3; ++e) cdt.insert_constraint(proj(tri[e]), proj(tri[(e + 1) % 3]));
-    const typename K::Triangle_3 t3(cg(tri[0]), cg(tri[1]), cg(tri[2]));
-    const auto tb = box_of<FT, 3>(tri);
-    for (const auto& p : cuts.points)
-      if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) cdt.insert(proj(p));
-    for (const auto& [a, b] : cuts.segments) {
-      if (!tb.overlaps(box_of<FT, 3>({a, b}))) continue;
-      const auto r = CGAL::intersection(typename K::Segment_3(cg(a), cg(b)), t3);
-      if (!r) continue;
-      if (const P3* p = boost::get<P3>(&*r))
-        cdt.insert(proj(pt(*p)));
-      else if (const auto* s = boost::get<typename K::Segment_3>(&*r))
-        cdt.insert_constraint(proj(pt(s->source())), proj(pt(s->target())));
+    std::map<std::pair<Point<FT, 3>, Point<FT, 3>>, int, std::less<>> uses;
+    for (std::size_t t : regions[k])
+      for (int e = 0; e < 3; ++e) {
+        Point<FT, 3> a = tris[t][std::size_t(e)], b = tris[t][std::size_t((e + 1) % 3)];
+        if (PointLess<FT, 3>()(b, a)) std::swap(a, b);
+        ++uses[{a, b}];
+      }
+    for (const auto& [edge, n] : uses) {
+      cdt.insert(proj(edge.first));
+      cdt.insert(proj(edge.second));
+      if (n == 1) cdt.insert_constraint(proj(edge.first), proj(edge.second));
+    }
+    for (std::size_t t : regions[k]) {
+      const auto& tri = tris[t];
+      const typename K::Triangle_3 t3(cg(tri[0]), cg(tri[1]), cg(tri[2]));
+      const auto tb = box_of<FT, 3>(tri);
+      for (const auto& p : cuts.points)
+        if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) cdt.insert(proj(p));
+      for (const auto& [a, b] : cuts.segments) {
+        if (!tb.overlaps(box_of<FT, 3>({a, b}))) continue;
+        const auto r = CGAL::intersection(typename K::Segment_3(cg(a), cg(b)), t3);
+        if (!r) continue;
+        if (const P3* p = boost::get<P3>(&*r))
+          cdt.insert(proj(pt(*p)));
+        else if (const auto* sg = boost::get<typename K::Segment_3>(&*r))
+          cdt.insert_constraint(proj(pt(sg->source())), proj(pt(sg->target())));
+      }
     }
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
       all.insert(lifted[k][v] = fr.lift(v->point().x(), v->point().y()));
+    // The region may be non-convex: keep the faces whose centroid lies in one of its triangles.
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      const P2 c =
+          CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+      const Point<FT, 3> q = fr.lift(c.x(), c.y());
+      for (std::size_t t : regions[k])
+        if (box_contains<FT, 3>(box_of<FT, 3>(tris[t]), q) && point_in_simplex<FT, 3>(tris[t], q)) {
+          inside[k].insert(f);
+          break;
+        }
+    }
   }
   BoundarySubdivision<FT, 3> s;
   s.points.assign(all.begin(), all.end());
   add_vertex_faces(s);
-  std::vector<std::map<VertexHandle, VertexId>> ids(tris.size());
-  for (std::size_t k = 0; k < tris.size(); ++k)
+  std::vector<std::map<VertexHandle, VertexId>> ids(regions.size());
+  for (std::size_t k = 0; k < regions.size(); ++k)
     for (const auto& [h, p] : lifted[k]) ids[k][h] = vertex_id(s, p);
   std::map<std::pair<VertexId, VertexId>, std::size_t> edge_of;
-  for (std::size_t k = 0; k < tris.size(); ++k) {
+  for (std::size_t k = 0; k < regions.size(); ++k) {
     auto& cdt = cdts[k];
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
       if (!cdt.is_constrained(*e)) continue;
       const auto f = e->first;
       const int i = e->second;
+      if (!inside[k].count(f) && !inside[k].count(f->neighbor(i))) continue;
       VertexId a = ids[k].at(f->vertex(cdt.cw(i))), b = ids[k].at(f->vertex(cdt.ccw(i)));
       if (a > b) std::swap(a, b);
       if (edge_of.count({a, b})) continue;
@@ -540,18 +607,18 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
       add_edge_face(s, a, b);
     }
   }
-  for (std::size_t k = 0; k < tris.size(); ++k) {
+  for (std::size_t k = 0; k < regions.size(); ++k) {
     auto& cdt = cdts[k];
-    std::map<typename Cdt<FT>::Face_handle, bool> seen;
+    std::set<FaceHandle> seen;
     for (auto f0 = cdt.finite_faces_begin(); f0 != cdt.finite_faces_end(); ++f0) {
-      typename Cdt<FT>::Face_handle h0 = f0;
-      if (seen[h0]) continue;
+      FaceHandle h0 = f0;
+      if (!inside[k].count(h0) || seen.count(h0)) continue;
       BoundaryFace face;
       face.dimension = 2;
       std::set<VertexId> verts;
       std::set<std::size_t> closure;
-      std::vector<typename Cdt<FT>::Face_handle> stack{h0};
-      seen[h0] = true;
+      std::vector<FaceHandle> stack{h0};
+      seen.insert(h0);
       while (!stack.empty()) {
         auto h = stack.back();
         stack.pop_back();
@@ -568,8 +635,8 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
             continue;
           }
           auto n = h->neighbor(i);
-          if (cdt.is_infinite(n) || seen[n]) continue;
-          seen[n] = true;
+          if (cdt.is_infinite(n) || seen.count(n) || !inside[k].count(n)) continue;
+          seen.insert(n);
           stack.push_back(n);
         }
       }
@@ -597,17 +664,35 @@ close_subdivisions_3d(const TemplatedStructure<FT, 3>& x,
     if (PointLess<FT, 3>()(b, a)) std::swap(a, b);
     return cuts[t].segments.emplace(a, b).second;
   };
-  for (const auto& m : ms)
+  // A domain is cut along the outline of its polygonal pieces: an edge two of them share lies
+  // inside the domain (the pieces follow the carriers' triangles, whose inner edges are no
+  // feature, see flat_regions). Segment and point pieces are cuts unless they are such an edge
+  // or a polygon's vertex (facet pairs that only touch along a carrier edge give them).
+  for (const auto& m : ms) {
+    using Seg = std::pair<Point<FT, 3>, Point<FT, 3>>;
+    const auto seg = [](Point<FT, 3> a, Point<FT, 3> b) {
+      if (PointLess<FT, 3>()(b, a)) std::swap(a, b);
+      return Seg{a, b};
+    };
+    std::map<Seg, int, std::less<>> outline;
+    PointSet<FT, 3> corners;
     for (const auto& piece : m.domain) {
       const auto& v = piece.vertices;
-      if (v.size() == 1)
-        cuts[m.from_template()].points.insert(v[0]);
-      else
-        for (std::size_t k = 0; k < v.size(); ++k) {
-          if (v.size() == 2 && k == 1) break;
-          add_segment(m.from_template(), v[k], v[(k + 1) % v.size()]);
-        }
+      if (v.size() < 3) continue;
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        ++outline[seg(v[k], v[(k + 1) % v.size()])];
+        corners.insert(v[k]);
+      }
     }
+    for (const auto& piece : m.domain) {
+      const auto& v = piece.vertices;
+      if (v.size() == 1 && !corners.count(v[0])) cuts[m.from_template()].points.insert(v[0]);
+      if (v.size() == 2 && !outline.count(seg(v[0], v[1])))
+        add_segment(m.from_template(), v[0], v[1]);
+    }
+    for (const auto& [edge, n] : outline)
+      if (n == 1) add_segment(m.from_template(), edge.first, edge.second);
+  }
   std::vector<BoundarySubdivision<FT, 3>> sub(nt);
   std::vector<bool> dirty(nt, true);
   std::size_t created = 0;

@@ -345,6 +345,108 @@ J finfet() {
   return d;
 }
 
+// ------------------------------------------------------------------------------ 3D: smoke case
+
+/// The 3D analogue of Figure 6.5, given as a PLC: the half cube [0,1] x [-1/2,1/2] x [0,1] and
+/// its mirror image in x = 0 (one mirror, Algorithm 6.1's case), so the whole is [-1,1] x
+/// [-1/2,1/2] x [0,1]. The smallest 3D object: a smoke case for every 3D generator.
+J cube_halves() {
+  J vertices = J::array();
+  for (int k = 0; k < 8; ++k)
+    vertices.push_back(
+        J::array({(k & 1) ? "1" : "0", (k & 2) ? "1/2" : "-1/2", (k & 4) ? "1" : "0"}));
+  const J faces =
+      J::array({J::array({0, 2, 3, 1}), J::array({4, 5, 7, 6}), J::array({0, 1, 5, 4}),
+                J::array({2, 6, 7, 3}), J::array({0, 4, 6, 2}), J::array({1, 3, 7, 5})});
+  const J mirror = J{{"reflection", J{{"normal", J::array({"1", "0", "0"})}, {"offset", "0"}}}};
+  return J{{"symmesh", "templated-structure/1"},
+           {"dimension", 3},
+           {"description",
+            "Cube halves: the half box [0,1]x[-1/2,1/2]x[0,1] given by its six faces "
+            "(a PLC) and its mirror image in the plane x = 0. Volume 2, surface 10."},
+           {"templates",
+            J::array({J{{"name", "half"},
+                        {"kind", "geometry"},
+                        {"vertices", vertices},
+                        {"faces", faces},
+                        {"instances", J::array({instance(identity()), instance(mirror)})}}})}};
+}
+
+// ------------------------------------------------------------------------------ 3D: multi-TSV
+
+/// Four open 8-TSVs in a silicon trunk (Section 7.4, Figure 7.11): the trunk is the block
+/// [-3,3] x [-3,3] x [0,2] with four 8-gon prism holes of circumradius 1 centred at (+-3/2,
+/// +-3/2), given as a PLC whose top and bottom faces are polygons with four holes; it is
+/// instanced once (region 4). Each hole holds the three slice templates of tsv(8), instanced by
+/// the 8 rotations about the hole's axis, i.e. 32 copies each. The hole walls are given as
+/// triangles with the slice carriers' diagonals, so the two sides of each wall agree.
+J multi_tsv() {
+  const int n = 8;
+  const std::array<std::array<std::string, 2>, 4> centres{
+      {{"-3/2", "-3/2"}, {"3/2", "-3/2"}, {"-3/2", "3/2"}, {"3/2", "3/2"}}};
+  J tsv_doc = tsv(n);
+  J templates = J::array();
+  for (auto& t : tsv_doc["templates"]) {
+    const int region = t["instances"][0]["region"].get<int>();
+    J inst = J::array();
+    for (const auto& c : centres)
+      for (int k = 0; k < n; ++k) {
+        const J rows =
+            J::array({J::array({cos_of(k, n), "-" + sin_of(k, n), "0"}),
+                      J::array({sin_of(k, n), cos_of(k, n), "0"}), J::array({"0", "0", "1"})});
+        inst.push_back(
+            instance(J{{"matrix", rows}, {"translation", J::array({c[0], c[1], "0"})}}, region));
+      }
+    t["instances"] = inst;
+    templates.push_back(t);
+  }
+  // The trunk: 8 block corners (bottom 0..3, top 4..7), then per hole h the bottom ring
+  // 8 + 16h + k and the top ring 8 + 16h + 8 + k (k = 0..7, counter-clockwise from angle 0).
+  J vertices = J::array();
+  for (const char* z : {"0", "2"})
+    for (const auto& xy : std::array<std::array<const char*, 2>, 4>{
+             {{"-3", "-3"}, {"3", "-3"}, {"3", "3"}, {"-3", "3"}}})
+      vertices.push_back(J::array({xy[0], xy[1], z}));
+  for (const auto& c : centres)
+    for (const char* z : {"0", "2"})
+      for (int k = 0; k < n; ++k)
+        vertices.push_back(J::array({c[0] + "+" + cos_of(k, n), c[1] + "+" + sin_of(k, n), z}));
+  const auto ring = [&](int h, int top) {
+    J r = J::array();
+    for (int k = 0; k < n; ++k) r.push_back(8 + 2 * n * h + n * top + k);
+    return r;
+  };
+  J bottom_holes = J::array(), top_holes = J::array();
+  for (int h = 0; h < 4; ++h) {
+    bottom_holes.push_back(ring(h, 0));
+    top_holes.push_back(ring(h, 1));
+  }
+  J faces = J::array({J{{"polygon", J::array({0, 3, 2, 1})}, {"holes", bottom_holes}},
+                      J{{"polygon", J::array({4, 5, 6, 7})}, {"holes", top_holes}},
+                      J::array({0, 1, 5, 4}), J::array({1, 2, 6, 5}), J::array({2, 3, 7, 6}),
+                      J::array({3, 0, 4, 7})});
+  for (int h = 0; h < 4; ++h)
+    for (int k = 0; k < n; ++k) {
+      // The silicon slice's outer quad is split from the bottom at angle k to the top at k+1.
+      const int b0 = 8 + 2 * n * h + k, b1 = 8 + 2 * n * h + (k + 1) % n;
+      faces.push_back(J::array({b0, b1, b1 + n}));
+      faces.push_back(J::array({b0, b1 + n, b0 + n}));
+    }
+  templates.push_back(J{{"name", "trunk"},
+                        {"kind", "geometry"},
+                        {"vertices", vertices},
+                        {"faces", faces},
+                        {"instances", J::array({instance(identity(), 4)})}});
+  return J{{"symmesh", "templated-structure/1"},
+           {"dimension", 3},
+           {"description",
+            "Multi-TSV (Section 7.4): four open 8-TSVs (the slices of tsv-8: oxide 1, metal 2, "
+            "silicon 3, each x 32 = 8 rotations x 4 centres (+-3/2, +-3/2)) in a silicon trunk "
+            "[-3,3]^2 x [0,2] with four 8-gon holes (region 4, given by its faces, instanced "
+            "once). Exact in K_8."},
+           {"templates", templates}};
+}
+
 struct Entry {
   std::string summary;
   std::function<J()> make;
@@ -375,6 +477,11 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
     v.push_back(
         {"finfet",
          {"3D FinFET-like device, 4 regions, two mirror planes (6 box templates x 4)", finfet}});
+    v.push_back(
+        {"multi-tsv",
+         {"3D four open 8-TSVs in a trunk instanced once, 4 regions (Section 7.4)", multi_tsv}});
+    v.push_back(
+        {"cube-halves", {"3D half box and its mirror image (PLC input), smoke case", cube_halves}});
     v.push_back({"gear", {"12-tooth gear with a bore, whole (for cut --rotation 12)", gear}});
     v.push_back({"mosfet", {"MOSFET-like device, 4 regions, one mirror axis", mosfet}});
     v.push_back({"aircraft", {"aircraft-like outline, one mirror axis, sharp angles", aircraft}});
