@@ -62,13 +62,14 @@ Rows of spec/traceability.md
   or more numbers "N.M" or ranges "N.M–N.K" (en dash or hyphen, same chapter); a number without
   a kind word takes the last kind word before it ("Def A.17 k-simplex, A.9 faces" names Def A.17
   and Def A.9). Other words that introduce numbers (Sec, Secs, Section, Fig, Figure, Table,
-  Chapter, Ch) switch the kind off, and so does ";".
+  Chapter, Ch) switch the kind off, and so does ";". Every name in the first cell counts, one
+  in parentheses too, so a first cell names only the items its row is about.
   A row is valid when
     (a) its second cell (the implementing symbol) and its third cell (the test or property
         that checks it) are both non-empty — not blank, "-" or "—" — and the third names a test
         in backticks or as Suite.Name / Suite.*, or
-    (b) a cell after the first starts with a reason: "not computable", "out of scope" or
-        "not implemented" (the last must name the open issue, "issue N").
+    (b) a cell after the first starts with a reason: "not computable", "out of scope",
+        "not implemented" or "not tested" (the last two must name the open issue, "issue N").
   An item is covered when at least one valid row names it. Also checked, in every table row:
     - every backticked token that looks like a path (contains "/" and ends in ".ext") exists,
       relative to ROOT or, for the symbol cells' short forms like `gen/symmetry_cut.h`,
@@ -217,8 +218,8 @@ KIND_WORDS = {
 }
 OFF_WORDS = {"sec", "secs", "section", "sections", "fig", "figs", "figure", "figures", "table",
              "tables", "chapter", "chapters", "ch"}
-TOKEN = re.compile(r"[A-Za-z]+\.?|" + NUM + r"(?:\s*[–-]\s*" + NUM + r")?|;")
-REASONS = ("not computable", "out of scope", "not implemented")
+TOKEN = re.compile(r"(?<![A-Za-z0-9.])" + NUM + r"(?:\s*[–-]\s*" + NUM + r")?|[A-Za-z]+\.?|;")
+REASONS = ("not computable", "out of scope", "not implemented", "not tested")
 EMPTY = {"", "-", "—", "–"}
 BACKTICKED = re.compile(r"`([^`]+)`")
 PATHLIKE = re.compile(r"^[\w./-]*/[\w.-]*\.[A-Za-z][A-Za-z0-9]*$")
@@ -232,7 +233,7 @@ def named_items(cell):
         tok = m.group(0)
         if tok == ";":
             kind = None
-        elif tok[0].isalpha():
+        elif m.group(1) is None:
             word = tok.rstrip(".").lower()
             if word in KIND_WORDS:
                 kind = KIND_WORDS[word]
@@ -251,8 +252,13 @@ def named_items(cell):
 
 
 def split_row(line):
-    cells = [c.strip() for c in line.strip().strip("|").split("|")]
-    return cells
+    """The cells of a markdown table row; "\\|" inside a cell is a literal bar."""
+    line = line.strip()
+    if line.startswith("|"):
+        line = line[1:]
+    if line.endswith("|") and not line.endswith("\\|"):
+        line = line[:-1]
+    return [c.strip() for c in re.split(r"(?<!\\)\|", line)]
 
 
 def gtest_names(root):
@@ -300,9 +306,10 @@ def check_table(root, items, problems):
         named = named_items(cells[0])
         reason = next((c for c in cells[1:] if c.lower().startswith(REASONS)), None)
         if reason is not None:
-            if reason.lower().startswith("not implemented") and not re.search(
+            if reason.lower().startswith(("not implemented", "not tested")) and not re.search(
                     r"\bissues? \d+", reason):
-                problems.append("%s: 'not implemented' must name the open issue (issue N)" % where)
+                problems.append("%s: '%s' must name the open issue (issue N)"
+                                % (where, reason.split(":")[0]))
                 continue
         else:
             symbol = cells[1] if len(cells) > 1 else ""
@@ -333,7 +340,7 @@ def main(argv):
     flags = {a for a in argv[1:] if a.startswith("--")}
     unknown = flags - {"--extract", "--require-dissertation"}
     if unknown or not args or len(args) > 2 or ("--extract" in flags and len(args) != 1):
-        sys.stderr.write(__doc__.split("\n\n")[1] + "\n")
+        sys.stderr.write(__doc__[__doc__.index("Usage"):__doc__.index("Where the dissertation")])
         return 2
     if "--extract" in flags:
         with open(args[0], encoding="utf-8") as f:
@@ -358,6 +365,11 @@ def main(argv):
         if fresh != committed:
             print("%s differs from the extraction of %s; regenerate it with --extract"
                   % (ITEMS_FILE, dissertation))
+            old, new = set(committed.split("\n")), set(fresh.split("\n"))
+            for line in sorted(old - new):
+                print("  only in the committed list: " + line)
+            for line in sorted(new - old):
+                print("  only in the extraction:     " + line)
             return 1
         print("traceability_source: %s re-extracted from %s" % (ITEMS_FILE, dissertation))
     elif "--require-dissertation" in flags:
