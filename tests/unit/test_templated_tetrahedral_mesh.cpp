@@ -9,6 +9,7 @@
 #include "symmesh/mesh/templated_mesh.h"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <string>
@@ -104,7 +105,18 @@ TEST_P(TetrahedralGeneration, CertifiedConformingPositiveAndFillsTheVolume) {
 INSTANTIATE_TEST_SUITE_P(Fixtures, TetrahedralGeneration,
                          ::testing::Values(Case{"cube_mirrored_halves_3d.json", 2, 10},
                                            Case{"translated_boxes_3d.json", 2, 10},
-                                           Case{"rotational_slice_3d.json", 4, 16}));
+                                           Case{"rotational_slice_3d.json", 4, 16},
+                                           Case{"tunnel_boxes_3d.json", 6, 32}),
+                         // A name from the file, not the printed struct: that prints the address
+                         // of the file name, so ctest's discovered names would not match at run
+                         // time and the cases would run nothing.
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           std::string name = info.param.file;
+                           name = name.substr(0, name.find('.'));
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
 
 TEST(TetrahedralGeneration, TemplatedMeshIsSmallerThanItsStructureInstance) {
   const auto x = fixture("rotational_slice_3d.json");
