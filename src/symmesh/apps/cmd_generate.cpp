@@ -294,7 +294,9 @@ void add_generate(CLI::App& app, int& exit_code) {
                   "6.5) | sao (small-angle optimisation, Section 6.3.2: a rotational slice is "
                   "cut into a centre n-gon and a ring slice, and the line meshes are refined "
                   "until every triangle meets --min-angle) | conventional (same mesher on the "
-                  "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry)")
+                  "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry). 3D: auto, bpp "
+                  "(Algorithm 5.7), rotational, reflective, combined, conventional (TetGen on the "
+                  "whole geometry)")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out,
                   "structure instance: .vtu (binary, appended), .msh (4.1 binary) or .mesh "

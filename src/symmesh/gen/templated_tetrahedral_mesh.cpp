@@ -10,6 +10,7 @@
 #include "symmesh/gen/pipeline_stages.h"
 #include "symmesh/gen/rotation_order.h"
 #include "symmesh/gen/shared_vertex_bookkeeping.h"
+#include "symmesh/gen/symmetry_copies.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/mesh/union_find.h"
@@ -34,6 +35,7 @@ using support::minor_faults;
 using support::rounded;
 using support::seconds_since;
 using support::SvbPairs;
+using support::Symmetry;
 
 template <class FT>
 using P3 = core::Point<FT, 3>;
@@ -390,6 +392,33 @@ core::Lemma42Verdict certify_by_mappings(const core::BoundaryPatchPartition<FT, 
   return v;
 }
 
+/// Lemma 4.2 for the reflective methods (spec/generation.md#reflective-3d), exactly: copy 0's
+/// interfaces by its mappings (certify_by_mappings on copy 0's BPP), and every interface of a
+/// copy-0 instance with a copy-m instance (m != 0) shown to be fixed pointwise by S_m (each vertex
+/// of each domain piece, exactly). Then such an interface also lies in the copy-0 instances of
+/// both templates (x = S_m^-1 x), so both sides carry the same surface mesh there (the relative
+/// map is the identity on it); every other pair (k, l) is S_k of the pair (0, S_k^-1 S_l). When a
+/// piece is not fixed (copy 0 is not a strict fundamental domain), the general checker decides.
+template <class FT>
+core::Lemma42Verdict certify_copies(const core::TemplatedStructure<FT, 3>& x,
+                                    const std::vector<core::RigidTransformation<FT, 3>>& copies,
+                                    const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                    const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  auto v = certify_by_mappings(bpp, boundaries);
+  if (!v.holds) return v;
+  for (const auto& m : core::template_boundary_mappings(x, false)) {
+    if (m.whole_boundary || m.from.g != 0 || m.to.g == 0) continue;
+    ++v.pairs_checked;
+    const auto& from = x.tf(m.from);
+    for (const auto& piece : m.domain)
+      for (const auto& p : piece.vertices) {
+        const auto w = from(p);
+        if (copies[m.to.g](w) != w) return certify_3(x, boundaries);
+      }
+  }
+  return v;
+}
+
 /// Section 6.3 in 3D: the BPP of the first two rotated copies shows every interface of
 /// consecutive copies (k, k+1) (rotations of (0, 1)); the method also needs that no two
 /// non-consecutive copies touch (e.g. slices meeting only on the axis), because their interfaces
@@ -596,7 +625,9 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
 /// TetGen call on the whole geometry instead of one per template.
 template <class FT>
 GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o,
-                            bool rotational = false, bool whole = false) {
+                            Symmetry symmetry = Symmetry::none, bool whole = false) {
+  const bool rotational = symmetry == Symmetry::rotational;
+  const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
   if (!(o.size > 0) || !std::isfinite(o.size))
     throw std::invalid_argument("--size must be a positive number");
   if (o.progress) o.progress->stage("templates well-formed", 0, "");
@@ -630,13 +661,22 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
     two_copies.templates = x.templates;
     for (const auto& list : x.instances) two_copies.instances.push_back({list[0], list[1]});
   }
+  std::size_t copies = 0;
+  if (group) {
+    // Algorithms 6.1/6.4/6.5 in 3D: copy 0 of every template is the positive part; its BPP makes
+    // the interfaces inside it conform, and the mirror planes need nothing (Lemma 6.1: each
+    // reflection fixes its mirror pointwise, so any surface mesh of a mirror face conforms).
+    copies = support::symmetry_copies(x, symmetry).size();
+    two_copies.templates = x.templates;
+    for (const auto& list : x.instances) two_copies.instances.push_back({list[0]});
+  }
   const double symmetry_seconds = seconds_since(t0);
   const long symmetry_faults = minor_faults() - f0;
   stage("instance overlap (Eq. 4.2)", 0, "");
   if (const auto overlap = core::find_instance_overlap(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
-  const auto bpp = support::boundary_patch_stage(rotational ? two_copies : x, o, symmetry_seconds,
-                                                 symmetry_faults, r);
+  const auto bpp = support::boundary_patch_stage(rotational || group ? two_copies : x, o,
+                                                 symmetry_seconds, symmetry_faults, r);
 
   stage("line and surface meshes", 0, "");
   t0 = Clock::now();
@@ -654,9 +694,15 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   t0 = Clock::now();
   f0 = minor_faults();
   auto candidates = support::svb_candidates<FT, 3>(
-      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations);
+      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations,
+      copies);
   std::vector<std::size_t> boundary_vertices;
   for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
+  if (group) {
+    std::vector<std::vector<P3<FT>>> points;
+    for (const auto& b : boundaries) points.push_back(b.exact);
+    support::copy_candidates<FT, 3>(x, points, candidates);
+  }
   support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
                                             r.templated);
   r.timings.svb = seconds_since(t0);
@@ -708,7 +754,9 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   faults.template_meshing = minor_faults() - f0;
 
   support::certificate_stage(o, r, [&] {
-    return o.direct_certificate ? certify_3(x, boundaries) : certify_by_mappings(bpp, boundaries);
+    if (o.direct_certificate) return certify_3(x, boundaries);
+    if (group) return certify_copies(x, support::symmetry_copies(x, symmetry), bpp, boundaries);
+    return certify_by_mappings(bpp, boundaries);
   });
   return r;
 }
@@ -716,41 +764,53 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
 template <class FT>
 GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method method,
                                const GenerationOptions& options) {
+  std::string unused;
+  const auto rotational_applies = [&] {
+    const std::size_t n = support::rotation_order(x, unused);
+    return n > 0 && !non_consecutive_contact(x, n);
+  };
+  const auto is_group = [&](Symmetry kind) {
+    try {
+      support::symmetry_copies(x, kind);
+      return true;
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
+  };
+  if (method == Method::automatic)
+    // The most specialised method whose exact checks pass; bpp needs no symmetry.
+    method = x.instances.empty()              ? Method::bpp
+             : rotational_applies()           ? Method::rotational
+             : is_group(Symmetry::combined)   ? Method::combined
+             : is_group(Symmetry::reflective) ? Method::reflective
+                                              : Method::bpp;
   GenerationResult r;
   switch (method) {
-  case Method::automatic: {
-    // Rotational when its exact checks pass (the slices of a TSV), else bpp.
-    std::string unused;
-    const std::size_t n = support::rotation_order(x, unused);
-    if (n > 0 && !non_consecutive_contact(x, n)) {
-      r = generate_3(x, options, true);
-      r.method = "rotational";
-    } else {
-      r = generate_3(x, options);
-      r.method = "bpp";
-    }
-    break;
-  }
   case Method::bpp:
     r = generate_3(x, options);
     r.method = "bpp";
     break;
   case Method::rotational:
-    r = generate_3(x, options, true);
+    r = generate_3(x, options, Symmetry::rotational);
     r.method = "rotational";
     break;
-  case Method::conventional: {
+  case Method::reflective:
+    r = generate_3(x, options, Symmetry::reflective);
+    r.method = "reflective";
+    break;
+  case Method::combined:
+    r = generate_3(x, options, Symmetry::combined);
+    r.method = "combined";
+    break;
+  case Method::conventional:
     // The boundary meshes as the templated method makes them (rotational when it applies).
-    std::string unused;
-    const std::size_t n = support::rotation_order(x, unused);
-    r = generate_3(x, options, n > 0 && !non_consecutive_contact(x, n), true);
+    r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none, true);
     r.method = "conventional";
     break;
-  }
   default:
     throw std::invalid_argument(
-        "--method: only auto, bpp, rotational and conventional generate 3D meshes "
-        "so far (spec/generation.md#alg-5-7)");
+        "--method: only auto, bpp, rotational, reflective, combined and conventional generate 3D "
+        "meshes so far (spec/generation.md#alg-5-7)");
   }
   return r;
 }
