@@ -113,6 +113,38 @@ bad "malformed mirror" "--mirror" "$TMP/ngon-8.json" --mirror 1
 bad "NaN in a mirror" "--mirror" "$TMP/ngon-8.json" --mirror nan,1
 bad "unknown option" "--frobnicate" "$TMP/ngon-8.json" --rotation 8 --frobnicate
 bad "start with a mirror" "--start" "$TMP/star.json" --rotation 5 --mirror 0,1 --start 1,0
+# 3D (spec/generation.md#cut-3d): the whole 8-TSV (three annulus prisms given as PLCs) cut into
+# slices about the z axis and into half-slices (Algorithm 6.5), the FinFET into its quadrant
+# (Algorithm 6.4); each cut meshed by the method auto picks, read back by meshio: conforming,
+# positive, the whole object's volume and boundary area.
+"$BIN" example tsv-whole-8 -o "$TMP/tsv_whole.json"
+"$BIN" example finfet -o "$TMP/finfet.json"
+read -r TSV_VOLUME TSV_SURFACE < <(/usr/bin/python3 -c "
+import math
+n, h, R, r = 8, 2.0, 1.0, 0.2
+area = lambda q: n / 2 * q * q * math.sin(2 * math.pi / n)
+perimeter = lambda q: 2 * n * q * math.sin(math.pi / n)
+print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))")
+cut3() { # NAME INPUT METHOD VOLUME SURFACE CUT-OPTIONS...
+  local name=$1 input=$2 method=$3 volume=$4 surface=$5; shift 5
+  if ! "$BIN" cut "$input" "$@" -o "$TMP/$name.json" --quiet 2> "$TMP/err"; then
+    fail "$name: cut failed: $(cat "$TMP/err")"; return; fi
+  if ! "$BIN" generate "$TMP/$name.json" --size 0.15 -o "$TMP/$name.vtu" --report "$TMP/$name.r.json" \
+      --quiet 2> "$TMP/err"; then fail "$name: generate failed: $(cat "$TMP/err")"; return; fi
+  /usr/bin/python3 -c "import json,sys; m=json.load(open(sys.argv[1]))['method']; assert m == sys.argv[2], m" \
+    "$TMP/$name.r.json" "$method" || fail "$name: auto did not pick $method"
+  if msg=$(/usr/bin/python3 tests/cli/structure_instance_checks.py "$TMP/$name.vtu" "$TMP/$name.r.json" \
+      "$volume" "$surface" 2>&1); then pass "$name: cut + $method: $(echo "$msg" | tail -1)"
+  else fail "$name: $msg"; fi
+}
+cut3 tsv_slices "$TMP/tsv_whole.json" rotational "$TSV_VOLUME" "$TSV_SURFACE" --rotation 8
+cut3 tsv_half_slices "$TMP/tsv_whole.json" combined "$TSV_VOLUME" "$TSV_SURFACE" --rotation 8 --mirror 0,1,0
+cut3 finfet_quadrant "$TMP/finfet.json" reflective 14.48 46.4 --mirror 1,0,0 --mirror 0,1,0
+bad "3D: the TSV has no order-16 rotation" "does not have the symmetry" "$TMP/tsv_whole.json" --rotation 16
+bad "3D: the FinFET has no mirror z = 0" "region 1" "$TMP/finfet.json" --mirror 0,0,1
+bad "3D: a mirror with a rotation must contain the axis" "contain" "$TMP/tsv_whole.json" --rotation 8 --mirror 0,1,1
+bad "3D: mirror needs three components" "--mirror" "$TMP/finfet.json" --mirror 1,0
+bad "3D: mirror planes not orthogonal" "not orthogonal" "$TMP/finfet.json" --mirror 1,0,0 --mirror 1,1,0
 echo '{"symmesh": "templated-structure/1", "dimension": 2, "templates": [' > "$TMP/broken.json"
 bad "malformed JSON" "broken.json" "$TMP/broken.json" --rotation 4
 finish

@@ -106,7 +106,7 @@ for name in $("$BIN" example --list | grep $'\t3D ' | cut -f1); do
     tsv-*)
       read -r v a < <($PY -c "
 import math
-n, h, R, r = ${name#tsv-}, 2.0, 1.0, 0.2
+n, h, R, r = ${name##*-}, 2.0, 1.0, 0.2
 area = lambda q: n / 2 * q * q * math.sin(2 * math.pi / n)
 perimeter = lambda q: 2 * n * q * math.sin(math.pi / n)
 print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))") ;;

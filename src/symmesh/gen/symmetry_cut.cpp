@@ -1,6 +1,6 @@
 // The cut of a whole symmetric object into its fundamental piece (spec/generation.md#cut).
 #include "symmesh/gen/symmetry_cut.h"
-#include "symmesh/number/subfield_embedding.h"
+#include "symmesh/gen/cut_support.h"
 
 #include <algorithm>
 #include <bit>
@@ -19,8 +19,10 @@ using number::CyclotomicFieldPtr;
 using P = CutPoint;
 
 constexpr double kPi = 3.14159265358979323846;
-/// The largest field K_m the cut builds (the templated-structure reader's limit as well).
-constexpr long kMaxFieldOrder = 1024;
+using cut_support::compare_coefficients;
+using cut_support::cos_sin;
+using cut_support::embed;
+using cut_support::kMaxFieldOrder;
 
 // ----- exact arithmetic on points -------------------------------------------------------------
 
@@ -40,19 +42,6 @@ Cyclotomic dot(const P& a, const P& b) {
   return a[0] * b[0] + a[1] * b[1];
 }
 
-/// Coefficients compared with zero padding: equal values have equal keys in one field, whether
-/// an element is held in rational mode or as a field element.
-int compare_coefficients(const Cyclotomic& a, const Cyclotomic& b) {
-  const auto& x = a.coefficients();
-  const auto& y = b.coefficients();
-  static const mpq_class zero(0);
-  for (std::size_t i = 0; i < std::max(x.size(), y.size()); ++i) {
-    const mpq_class& u = i < x.size() ? x[i] : zero;
-    const mpq_class& v = i < y.size() ? y[i] : zero;
-    if (const int c = cmp(u, v); c != 0) return c;
-  }
-  return 0;
-}
 /// A total order on exact points for maps (not a geometric order).
 struct KeyLess {
   bool operator()(const P& a, const P& b) const {
@@ -79,26 +68,6 @@ std::string show(const P& p) {
   s.precision(6);
   s << "(" << p[0].to_double() << ", " << p[1].to_double() << ")";
   return s.str();
-}
-
-/// v as an element of F (null: v must be rational). \pre v's field divides F.
-Cyclotomic embed(const Cyclotomic& v, const CyclotomicFieldPtr& F) {
-  if (v.is_rational()) return F ? F->element({v.rational_value()}) : Cyclotomic(v.rational_value());
-  if (!F || F->m() % v.field()->m() != 0)
-    throw CutError("internal error: a number of K_" + std::to_string(v.field()->m()) +
-                   " does not embed into the cut's field");
-  if (F->same_field(*v.field())) return v;
-  return number::embed_subfield_element(*F, v.field()->m(), v.coefficients());
-}
-
-/// cos and sin of 2πk/n: rational for quarter turns, else in F (\pre n | F's m and 4 | m).
-std::pair<Cyclotomic, Cyclotomic> cos_sin(int k, int n, const CyclotomicFieldPtr& F) {
-  const int q = ((4 * k) % (4 * n) + 4 * n) % (4 * n); // the angle in quarter turns times n
-  if (q % n == 0) {
-    static const int c[] = {1, 0, -1, 0}, s[] = {0, 1, 0, -1};
-    return {Cyclotomic(c[q / n]), Cyclotomic(s[q / n])};
-  }
-  return {F->cos_2pi(k, n), F->sin_2pi(k, n)};
 }
 
 // ----- the symmetry group ---------------------------------------------------------------------

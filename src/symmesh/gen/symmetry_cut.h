@@ -86,4 +86,46 @@ CutResult cut_to_fundamental_piece(const core::TemplatedStructure<number::Cyclot
 /// the origin (such segments introduce no angle).
 double smallest_new_angle_deg(const std::vector<std::array<double, 4>>& segments, double sigma);
 
+// ----- 3D ----------------------------------------------------------------------------------
+
+using CutPoint3 = std::array<number::Cyclotomic, 3>;
+
+/// The symmetry to cut a 3D object by: a rotation about the z axis and mirror planes through
+/// the origin.
+struct SymmetrySpec3 {
+  int rotation_order = 0;         ///< n >= 2 about the z axis, or 0 for no rotation
+  std::vector<CutPoint3> mirrors; ///< normals of mirror planes through the origin (0 to 3)
+  /// Rotation only: the direction (x, y) of the slice's first half-plane; none = the x axis
+  /// (Algorithm 6.3's choice of the starting angle is 2D only).
+  std::optional<CutPoint> start;
+};
+
+/// One piece of the 3D cut: one instance of the object clipped to the fundamental cone, as a
+/// carrier tetrahedralization (conforming, positively oriented), instanced by the whole group.
+struct CutPiece3 {
+  int region = 1;
+  std::string name; ///< the instance's template name (and instance number)
+  std::vector<CutPoint3> points;
+  std::vector<std::array<std::size_t, 4>> tetrahedra;
+};
+
+struct CutResult3 {
+  std::vector<CutPiece3> pieces;
+  std::vector<GroupElement> group; ///< the instances of every piece, in this order
+  number::CyclotomicFieldPtr field;
+  int rotation_order = 0;
+  std::vector<CutPoint3> mirrors;
+  CutPoint3 start_direction; ///< rotation only: the first half-plane's direction (z = 0)
+};
+
+/// The cut of a whole 3D object (spec/generation.md#cut-3d): Algorithm 6.2 about the z axis
+/// (slice between the half-planes at σ and σ + 2π/n), 6.1/6.4 (positive part of one to three
+/// orthogonal mirror planes) and 6.5 (half-slice between a mirror plane through the z axis and
+/// that plane turned by π/n). Exact in K_m. The symmetry is verified on volumes: every generator
+/// g maps each region R into itself, vol(g(R) ∩ R) = vol(R), computed tetrahedron by tetrahedron.
+/// \pre x is a 3D templated geometry obeying Eq. 4.2 (the caller checks it). Throws CutError
+/// when the object does not have the symmetry (naming the element and region) or the spec is bad.
+CutResult3 cut_to_fundamental_piece(const core::TemplatedStructure<number::Cyclotomic, 3>& x,
+                                    const SymmetrySpec3& spec);
+
 } // namespace symmesh::gen

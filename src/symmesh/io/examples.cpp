@@ -296,6 +296,55 @@ J tsv(int n) {
   return d;
 }
 
+/// The whole open TSV of tsv(n), unsliced, for `symmesh cut --rotation n` in 3D: each layer is
+/// one template instanced once, the n-gon annulus prism between circumradii r_in and r_out
+/// (height 2) given by its faces (a PLC: top and bottom are n-gons with an n-gon hole, the walls
+/// are quadrilaterals).
+J annulus_prism(const std::string& name, const std::string& r_in, const std::string& r_out, int n,
+                int region) {
+  // Vertex (ring, k): ring 0 inner bottom, 1 outer bottom, 2 inner top, 3 outer top.
+  J vertices = J::array();
+  for (int ring = 0; ring < 4; ++ring)
+    for (int k = 0; k < n; ++k) {
+      const std::string& r = ring % 2 == 0 ? r_in : r_out;
+      vertices.push_back(
+          J::array({r + "*" + cos_of(k, n), r + "*" + sin_of(k, n), ring < 2 ? "0" : "2"}));
+    }
+  const auto v = [n](int ring, int k) { return ring * n + (k % n); };
+  J inner_bottom = J::array(), outer_bottom = J::array(), inner_top = J::array(),
+    outer_top = J::array();
+  for (int k = 0; k < n; ++k) {
+    inner_bottom.push_back(v(0, k));
+    outer_bottom.push_back(v(1, k));
+    inner_top.push_back(v(2, k));
+    outer_top.push_back(v(3, k));
+  }
+  J faces = J::array({J{{"polygon", outer_bottom}, {"holes", J::array({inner_bottom})}},
+                      J{{"polygon", outer_top}, {"holes", J::array({inner_top})}}});
+  for (int k = 0; k < n; ++k) {
+    faces.push_back(J::array({v(0, k), v(0, k + 1), v(2, k + 1), v(2, k)}));
+    faces.push_back(J::array({v(1, k), v(1, k + 1), v(3, k + 1), v(3, k)}));
+  }
+  return J{{"name", name},
+           {"kind", "geometry"},
+           {"vertices", vertices},
+           {"faces", faces},
+           {"instances", J::array({instance(identity(), region)})}};
+}
+
+J tsv_whole(int n) {
+  return J{{"symmesh", "templated-structure/1"},
+           {"dimension", 3},
+           {"description", "The open TSV of tsv-" + std::to_string(n) +
+                               ", whole: oxide (region 1), metal (2) and silicon (3) as three "
+                               "n-gon annulus prisms given by their faces, each instanced once; "
+                               "input for symmesh cut --rotation " +
+                               std::to_string(n) + ". Exact in K_" + std::to_string(n) + "."},
+           {"templates", J::array({annulus_prism("oxide", "1/5", "1/4", n, 1),
+                                   annulus_prism("metal", "1/4", "3/10", n, 2),
+                                   annulus_prism("silicon", "3/10", "1", n, 3)})}};
+}
+
 // ------------------------------------------------------------------------------ 3D: FinFET
 
 /// An axis-parallel box [x0,x1] x [y0,y1] x [z0,z1] as a geometry template (carrier: the 6
@@ -474,6 +523,9 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
            {"3D open TSV, " + std::to_string(n) + "-gon prism, via lined by 2 layers, 3 regions, " +
                 std::to_string(n) + " slices",
             [n] { return tsv(n); }}});
+    v.push_back({"tsv-whole-8",
+                 {"3D open 8-TSV, whole (3 annulus prisms as PLCs, for cut --rotation 8)",
+                  [] { return tsv_whole(8); }}});
     v.push_back(
         {"finfet",
          {"3D FinFET-like device, 4 regions, two mirror planes (6 box templates x 4)", finfet}});

@@ -1,0 +1,55 @@
+/// Exact helpers shared by the 2D and 3D cuts of whole symmetric objects
+/// (spec/generation.md#cut): embedding a number into the cut's field K_m, cos/sin of 2πk/n in
+/// it. Internal to gen/.
+#pragma once
+#include "symmesh/gen/symmetry_cut.h"
+#include "symmesh/number/cyclotomic.h"
+#include "symmesh/number/subfield_embedding.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace symmesh::gen::cut_support {
+
+using number::Cyclotomic;
+using number::CyclotomicFieldPtr;
+
+/// The largest field K_m the cut builds (the templated-structure reader's limit as well).
+constexpr long kMaxFieldOrder = 1024;
+
+/// v as an element of F (null: v must be rational). \pre v's field divides F.
+inline Cyclotomic embed(const Cyclotomic& v, const CyclotomicFieldPtr& F) {
+  if (v.is_rational()) return F ? F->element({v.rational_value()}) : Cyclotomic(v.rational_value());
+  if (!F || F->m() % v.field()->m() != 0)
+    throw CutError("internal error: a number of K_" + std::to_string(v.field()->m()) +
+                   " does not embed into the cut's field");
+  if (F->same_field(*v.field())) return v;
+  return number::embed_subfield_element(*F, v.field()->m(), v.coefficients());
+}
+
+/// cos and sin of 2πk/n: rational for quarter turns, else in F (\pre n | F's m and 4 | m).
+inline std::pair<Cyclotomic, Cyclotomic> cos_sin(int k, int n, const CyclotomicFieldPtr& F) {
+  const int q = ((4 * k) % (4 * n) + 4 * n) % (4 * n); // the angle in quarter turns times n
+  if (q % n == 0) {
+    static const int c[] = {1, 0, -1, 0}, s[] = {0, 1, 0, -1};
+    return {Cyclotomic(c[q / n]), Cyclotomic(s[q / n])};
+  }
+  return {F->cos_2pi(k, n), F->sin_2pi(k, n)};
+}
+
+/// Coefficients compared with zero padding: equal values have equal keys in one field, whether
+/// an element is held in rational mode or as a field element.
+inline int compare_coefficients(const Cyclotomic& a, const Cyclotomic& b) {
+  const auto& x = a.coefficients();
+  const auto& y = b.coefficients();
+  static const mpq_class zero(0);
+  for (std::size_t i = 0; i < std::max(x.size(), y.size()); ++i) {
+    const mpq_class& u = i < x.size() ? x[i] : zero;
+    const mpq_class& v = i < y.size() ? y[i] : zero;
+    if (const int c = cmp(u, v); c != 0) return c;
+  }
+  return 0;
+}
+
+} // namespace symmesh::gen::cut_support
