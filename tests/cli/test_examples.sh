@@ -65,4 +65,13 @@ done
 expect_exit 2 "unknown example" -- "$BIN" example no-such-thing -o "$TMP/none.json"
 grep -q "known: ngon-slice-5" "$TMP/stderr" && pass "the message lists the known names" || fail "message: $(cat "$TMP/stderr")"
 [ ! -e "$TMP/none.json" ] && pass "no file for an unknown example" || fail "file written for an unknown example"
+# --templated without -o: only the templated mesh is written (a structure instance too large to
+# write); neither -o nor --templated is bad input.
+"$BIN" example ngon-slice-8 -o "$TMP/only.json"
+"$BIN" generate "$TMP/only.json" --size 0.05 --templated "$TMP/only.tmesh" --quiet \
+  && [ -s "$TMP/only.tmesh" ] && [ -z "$(ls "$TMP" | grep -E '^only\.(vtu|msh|mesh)$')" ] \
+  && pass "--templated alone writes the .tmesh only" || fail "--templated alone"
+expect_exit 2 "generate without -o and --templated" -- \
+  "$BIN" generate "$TMP/only.json" --size 0.05
+grep -q -- "--templated" "$TMP/stderr" || fail "the message names -o and --templated"
 finish

@@ -4,8 +4,8 @@
 # .mesh, read back by meshio (cell count as reported, every triangle in at most two tetrahedra,
 # closed boundary, boundary area of the union (a non-conforming interface would add to it), no
 # duplicate vertex, positive volumes, exact volume), .msh opened by gmsh, byte-identical reruns,
-# the cell estimate refusing an infeasible --size, and a 3D method that does not exist yet
-# refused with exit 2 and no file; the built-in 8-TSV by the rotational method (= bpp bytes).
+# the cell estimate refusing an infeasible --size, the Gmsh peer (gmsh-3d) on the same
+# surfaces; the built-in 8-TSV by the rotational method (= bpp bytes).
 source "$(dirname "$0")/common.sh" "$@"
 PY=/usr/bin/python3
 
@@ -78,8 +78,15 @@ expect_exit 2 "--method rotational refuses slices that meet only on the axis (no
   "$BIN" generate data/rotational_slice_3d.json --size 0.15 --method rotational -o "$TMP/rot.vtu"
 grep -q "touch but are not consecutive" "$TMP/stderr" || fail "the refusal names the touching copies"
 [ ! -e "$TMP/rot.vtu" ] || fail "a refused 3D method left a file"
-expect_exit 2 "--method gmsh is not there in 3D yet" -- \
-  "$BIN" generate data/rotational_slice_3d.json --size 0.15 --method gmsh -o "$TMP/g.vtu"
+# The Gmsh peer in 3D (spec/generation.md#gmsh-3d): Gmsh's Delaunay on the surfaces of the
+# conventional baseline, which it must keep (same volume and boundary area, conforming).
+generate slices_gmsh data/rotational_slice_3d.json 4 16 gmsh vtu
+generate halves_gmsh data/cube_mirrored_halves_3d.json 2 10 gmsh vtu
+$PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['method'] == 'gmsh', r['method']" \
+  "$TMP/slices_gmsh.json" && pass "gmsh in 3D reports method gmsh" || fail "gmsh in 3D: method"
+"$BIN" generate data/rotational_slice_3d.json --size 0.15 --method gmsh -o "$TMP/gmsh_again.vtu" \
+  --quiet && cmp -s "$TMP/slices_gmsh.vtu" "$TMP/gmsh_again.vtu" \
+  && pass "3D gmsh rerun is byte-identical" || fail "3D gmsh rerun differs"
 
 # The built-in 8-TSV (K_8): auto picks the rotational method (Section 6.3 in 3D), whose mesh is
 # byte for byte the one of bpp; meshio checks volume and boundary area of the n-gon prism with

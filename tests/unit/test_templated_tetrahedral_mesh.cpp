@@ -4,7 +4,9 @@
 // perturbed surface mesh makes the certificate fail.
 #include <gtest/gtest.h>
 
+#include "symmesh/gen/gmsh_mesher.h"
 #include "symmesh/gen/templated_tetrahedral_mesh.h"
+#include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/io/examples.h"
 #include "symmesh/io/templated_structure_json.h"
 #include "symmesh/mesh/templated_mesh.h"
@@ -13,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 using namespace symmesh;
@@ -84,7 +87,7 @@ TEST_P(TetrahedralGeneration, CertifiedConformingPositiveAndFillsTheVolume) {
   const auto x = fixture(GetParam().file);
   gen::GenerationOptions o;
   o.size = 0.3;
-  for (const auto method : {gen::Method::bpp, gen::Method::conventional}) {
+  for (const auto method : {gen::Method::bpp, gen::Method::conventional, gen::Method::gmsh}) {
     auto r = gen::generate_tetrahedral_mesh(x, method, o);
     EXPECT_TRUE(r.lemma_4_2_holds) << r.lemma_4_2_failure;
     // The certificate mapping by mapping agrees with the general checker on AT's boundaries.
@@ -190,7 +193,110 @@ TEST(TetrahedralGeneration, GeometryTemplatesAndPositiveSizeRequired) {
   o.size = 0;
   EXPECT_THROW(gen::generate_tetrahedral_mesh(x, gen::Method::bpp, o), std::invalid_argument);
   o.size = 0.2;
-  EXPECT_THROW(gen::generate_tetrahedral_mesh(x, gen::Method::gmsh, o), std::invalid_argument);
+  EXPECT_THROW(gen::generate_tetrahedral_mesh(x, gen::Method::sao, o), std::invalid_argument);
+}
+
+/// The boundary triangles of AT (faces of one tetrahedron) by their vertices' coordinates.
+std::set<std::array<std::array<double, 3>, 3>>
+boundary_triangles(const mesh::TemplatedMeshCompactSvb& t) {
+  const auto at = mesh::assemble_structure_instance(t);
+  const auto& m = at.mesh.mesh;
+  std::map<std::array<int, 3>, int> faces;
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    const auto* v = m.cell(c);
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f{};
+      for (int k = 0, n = 0; k < 4; ++k)
+        if (k != skip) f[std::size_t(n++)] = v[k];
+      std::sort(f.begin(), f.end());
+      ++faces[f];
+    }
+  }
+  std::set<std::array<std::array<double, 3>, 3>> out;
+  for (const auto& [f, n] : faces) {
+    if (n != 1) continue;
+    std::array<std::array<double, 3>, 3> tri{};
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 3; ++d)
+        tri[std::size_t(k)][std::size_t(d)] = m.vertex(std::size_t(f[std::size_t(k)]))[d];
+    std::sort(tri.begin(), tri.end());
+    out.insert(tri);
+  }
+  return out;
+}
+
+/// spec/generation.md#gmsh-3d: Gmsh meshes the very surfaces the conventional baseline hands
+/// TetGen and keeps them, so both meshes have the same boundary triangles (coordinates and all);
+/// Gmsh's interior is its own.
+TEST(TetrahedralGeneration, GmshKeepsTheConventionalSurfaces) {
+  for (const char* file : {"rotational_slice_3d.json", "tunnel_boxes_3d.json"}) {
+    const auto x = fixture(file);
+    gen::GenerationOptions o;
+    o.size = 0.25;
+    const auto g = gen::generate_tetrahedral_mesh(x, gen::Method::gmsh, o);
+    const auto c = gen::generate_tetrahedral_mesh(x, gen::Method::conventional, o);
+    EXPECT_EQ(g.method, "gmsh");
+    EXPECT_TRUE(g.lemma_4_2_holds) << g.lemma_4_2_failure;
+    EXPECT_GT(g.timings.template_meshing, 0.0);
+    const auto gb = boundary_triangles(g.templated);
+    EXPECT_FALSE(gb.empty()) << file;
+    EXPECT_EQ(gb, boundary_triangles(c.templated)) << file;
+  }
+}
+
+/// The Gmsh 3D adapter alone (spec/generation.md#gmsh-3d) on two unit cubes sharing a face, two
+/// triangles per square: the input points come back first and unchanged, each region fills its
+/// cube, and bad input is a MeshingError.
+TEST(TetrahedralGeneration, GmshAdapterOnTwoCubes) {
+  gen::ClosedSurfaces in;
+  for (int x = 0; x <= 2; ++x)
+    for (int y = 0; y <= 1; ++y)
+      for (int z = 0; z <= 1; ++z) in.points.push_back({double(x), double(y), double(z)});
+  const auto id = [](int x, int y, int z) { return std::size_t(4 * x + 2 * y + z); };
+  // The square of the corner (x, y, z) spanned by the unit steps du, dv, as two triangles.
+  const auto square = [&](std::vector<std::array<std::size_t, 3>>& out, std::array<int, 3> p,
+                          std::array<int, 3> du, std::array<int, 3> dv) {
+    const auto at = [&](int a, int b) {
+      return id(p[0] + a * du[0] + b * dv[0], p[1] + a * du[1] + b * dv[1],
+                p[2] + a * du[2] + b * dv[2]);
+    };
+    out.push_back({at(0, 0), at(1, 0), at(1, 1)});
+    out.push_back({at(0, 0), at(1, 1), at(0, 1)});
+  };
+  for (int c = 0; c < 2; ++c) {
+    gen::ClosedSurfaces::Region r;
+    r.id = c + 1;
+    for (int x : {c, c + 1}) square(r.triangles, {x, 0, 0}, {0, 1, 0}, {0, 0, 1});
+    for (int y : {0, 1}) square(r.triangles, {c, y, 0}, {1, 0, 0}, {0, 0, 1});
+    for (int z : {0, 1}) square(r.triangles, {c, 0, z}, {1, 0, 0}, {0, 1, 0});
+    in.regions.push_back(r);
+  }
+  const auto g = gen::mesh_with_gmsh_3d(in, 0.4);
+  ASSERT_GE(g.nodes.size(), in.points.size());
+  for (std::size_t v = 0; v < in.points.size(); ++v) EXPECT_EQ(g.nodes[v], in.points[v]);
+  ASSERT_EQ(g.tetrahedra.size(), 2u);
+  for (std::size_t r = 0; r < 2; ++r) {
+    double volume = 0;
+    for (const auto& t : g.tetrahedra[r]) {
+      double e[3][3];
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 3; ++d)
+          e[k][d] = g.nodes[t[std::size_t(k + 1)]][std::size_t(d)] - g.nodes[t[0]][std::size_t(d)];
+      volume += std::abs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                         e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+                6;
+    }
+    EXPECT_GT(g.tetrahedra[r].size(), 5u);
+    EXPECT_NEAR(volume, 1.0, 1e-12) << "region " << r + 1;
+  }
+  EXPECT_THROW(gen::mesh_with_gmsh_3d(in, 0), gen::MeshingError);
+  auto three = in; // the shared square listed by a third region
+  three.regions.push_back({3, {in.regions[0].triangles[2], in.regions[0].triangles[3]}});
+  EXPECT_THROW(gen::mesh_with_gmsh_3d(three, 0.4), gen::MeshingError);
+  auto open = in; // a cube without its top: Gmsh finds no closed volume
+  open.regions[0].triangles.resize(open.regions[0].triangles.size() - 2);
+  EXPECT_THROW(gen::mesh_with_gmsh_3d(open, 0.4), gen::MeshingError);
 }
 
 TEST(TetrahedralGeneration, CellEstimateIsTheExactVolume) {

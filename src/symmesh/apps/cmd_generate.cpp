@@ -143,8 +143,12 @@ int run_generate(const GenerateOptions& o) {
                 "or gmsh)");
     return bad_input;
   }
+  if (o.out.empty() && o.templated.empty()) {
+    print_error("generate: give -o MESH (the structure instance) and/or --templated MESH.tmesh");
+    return bad_input;
+  }
   const std::string ext = std::filesystem::path(o.out).extension().string();
-  if (ext != ".vtu" && ext != ".msh" && ext != ".mesh") {
+  if (!o.out.empty() && ext != ".vtu" && ext != ".msh" && ext != ".mesh") {
     print_error("-o " + o.out + ": unknown mesh file extension (use .vtu, .msh or .mesh)");
     return bad_input;
   }
@@ -214,7 +218,7 @@ int run_generate(const GenerateOptions& o) {
   w.ascii = o.ascii;
   w.compress = o.compress;
   w.progress = progress.get();
-  io::write_mesh_file(at, o.out, w);
+  if (!o.out.empty()) io::write_mesh_file(at, o.out, w);
   if (!o.templated.empty()) io::write_tmesh(r.templated, o.templated);
   const double write_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
@@ -269,7 +273,9 @@ int run_generate(const GenerateOptions& o) {
     progress->message(
         std::to_string(at.cell_count()) + (volumetric ? " tetrahedra in " : " triangles in ") +
         std::to_string(r.templated.templated.instance_count()) + " instances of " +
-        std::to_string(r.templated.templated.templates.size()) + " templates, written to " + o.out);
+        std::to_string(r.templated.templated.templates.size()) + " templates, written to " +
+        (o.out.empty() ? o.templated
+                       : o.out + (o.templated.empty() ? std::string() : " and " + o.templated)));
   return ok;
 }
 } // namespace
@@ -296,12 +302,13 @@ void add_generate(CLI::App& app, int& exit_code) {
                   "until every triangle meets --min-angle) | conventional (same mesher on the "
                   "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry). 3D: auto, bpp "
                   "(Algorithm 5.7), rotational, reflective, combined, conventional (TetGen on the "
-                  "whole geometry)")
+                  "whole geometry), gmsh (Gmsh 3D Delaunay on the whole geometry, the same "
+                  "surfaces)")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out,
                   "structure instance: .vtu (binary, appended), .msh (4.1 binary) or .mesh "
-                  "(Medit, text)")
-      ->required();
+                  "(Medit, text); may be left out when --templated is given (a structure "
+                  "instance too large to write)");
   cmd->add_option("--max-cells", o->max_cells,
                   "refuse (exit 2, before any work) a --size whose estimated structure-instance "
                   "cell count is above N (default: memory / 250 bytes per cell)");

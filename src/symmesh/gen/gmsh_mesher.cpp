@@ -7,9 +7,11 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
 namespace symmesh::gen {
 namespace {
@@ -164,15 +166,157 @@ GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& in, double size) {
   return out;
 }
 
+GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& in, double size) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!(size > 0) || !std::isfinite(size)) throw MeshingError("Gmsh baseline: size must be > 0");
+  if (in.regions.empty()) throw MeshingError("Gmsh baseline: no region to mesh");
+  for (const auto& p : in.points)
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw MeshingError("Gmsh baseline: a boundary point is not finite");
+  // The regions each triangle bounds (one: on the outer boundary; two: an interface), by its
+  // sorted vertices; the triangle is handed to Gmsh once, as first given.
+  struct Sides {
+    std::array<std::size_t, 3> triangle;
+    std::vector<std::size_t> regions;
+  };
+  std::map<std::array<std::size_t, 3>, Sides> sides;
+  std::vector<std::array<std::size_t, 3>> order;
+  for (std::size_t r = 0; r < in.regions.size(); ++r) {
+    if (in.regions[r].triangles.empty())
+      throw MeshingError("Gmsh baseline: region " + std::to_string(in.regions[r].id) +
+                         " has no boundary triangles");
+    for (const auto& t : in.regions[r].triangles) {
+      for (std::size_t v : t)
+        if (v >= in.points.size())
+          throw MeshingError("Gmsh baseline: a boundary triangle names a missing point");
+      auto key = t;
+      std::sort(key.begin(), key.end());
+      auto [it, fresh] = sides.emplace(key, Sides{t, {}});
+      if (fresh) order.push_back(key);
+      auto& rs = it->second.regions;
+      if (std::find(rs.begin(), rs.end(), r) != rs.end() || rs.size() == 2)
+        throw MeshingError("Gmsh baseline: a boundary triangle is listed twice by region " +
+                           std::to_string(in.regions[r].id) + " or by three regions");
+      rs.push_back(r);
+    }
+  }
+  // One discrete surface per outer boundary of a region and per interface of two regions: the
+  // volumes then share their interface surfaces, hence their nodes there. The surfaces' mesh is
+  // the input triangles; a discrete surface without a parametrization is never remeshed.
+  constexpr std::size_t outside = std::size_t(-1);
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> surface_nodes;
+  for (const auto& key : order) {
+    const auto& s = sides.at(key);
+    const auto pair = s.regions.size() == 1 ? std::make_pair(s.regions[0], outside)
+                                            : std::make_pair(std::min(s.regions[0], s.regions[1]),
+                                                             std::max(s.regions[0], s.regions[1]));
+    auto& nodes = surface_nodes[pair];
+    for (std::size_t v : s.triangle) nodes.push_back(v + 1); // Gmsh tags start at 1
+  }
+  GmshSession session;
+  std::vector<int> volumes;
+  try {
+    std::vector<std::vector<int>> bounding(in.regions.size());
+    std::vector<int> surfaces;
+    for (const auto& [pair, nodes] : surface_nodes) {
+      surfaces.push_back(gmsh::model::addDiscreteEntity(2));
+      bounding[pair.first].push_back(surfaces.back());
+      if (pair.second != outside) bounding[pair.second].push_back(surfaces.back());
+    }
+    // Node k of the input is tag k + 1, classified on its surface(s) by reclassifyNodes.
+    std::vector<std::size_t> tags(in.points.size());
+    std::vector<double> coords;
+    coords.reserve(3 * in.points.size());
+    for (std::size_t k = 0; k < in.points.size(); ++k) {
+      tags[k] = k + 1;
+      coords.insert(coords.end(), in.points[k].begin(), in.points[k].end());
+    }
+    gmsh::model::mesh::addNodes(2, surfaces.at(0), tags, coords);
+    std::size_t k = 0;
+    for (const auto& [pair, nodes] : surface_nodes)
+      gmsh::model::mesh::addElementsByType(surfaces[k++], 2, {}, nodes); // 2: 3-node triangle
+    gmsh::model::mesh::reclassifyNodes();
+    gmsh::vectorpair volume_dim_tags;
+    for (std::size_t r = 0; r < in.regions.size(); ++r) {
+      volumes.push_back(gmsh::model::addDiscreteEntity(3, -1, bounding[r]));
+      volume_dim_tags.emplace_back(3, volumes.back());
+    }
+    // A discrete volume is meshed only once it has a "geometry" (Gmsh's documented way:
+    // createGeometry, which for a volume only marks it meshable). The surfaces get none, so their
+    // triangles stay as given.
+    gmsh::model::mesh::createGeometry(volume_dim_tags);
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay (-algo del3d)
+    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+    // Keep the node tags: input point k stays tag k + 1 (Gmsh renumbers after meshing otherwise).
+    gmsh::option::setNumber("Mesh.Renumber", 0);
+    gmsh::model::mesh::generate(3);
+  } catch (const MeshingError&) {
+    throw;
+  } catch (...) {
+    std::string why;
+    gmsh::logger::getLastError(why);
+    throw MeshingError("Gmsh baseline: " + (why.empty() ? std::string("Gmsh failed") : why));
+  }
+  GmshTetrahedra out;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.nodes = in.points;
+  std::vector<std::size_t> tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
+  // Tag -> node index: Gmsh numbers its own nodes after the input's (Mesh.Renumber = 0 keeps
+  // them), so the tags are about dense.
+  std::vector<std::size_t> index(tags.empty() ? 0
+                                              : *std::max_element(tags.begin(), tags.end()) + 1);
+  std::vector<bool> seen(in.points.size(), false);
+  for (std::size_t k = 0; k < tags.size(); ++k) {
+    const std::array<double, 3> q{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
+    if (tags[k] >= 1 && tags[k] <= in.points.size()) {
+      if (q != in.points[tags[k] - 1])
+        throw MeshingError("Gmsh baseline: Gmsh moved input point " + std::to_string(tags[k] - 1));
+      seen[tags[k] - 1] = true;
+      index[tags[k]] = tags[k] - 1;
+      continue;
+    }
+    index[tags[k]] = out.nodes.size();
+    out.nodes.push_back(q);
+  }
+  if (std::find(seen.begin(), seen.end(), false) != seen.end())
+    throw MeshingError("Gmsh baseline: Gmsh dropped an input point");
+  out.tetrahedra.resize(in.regions.size());
+  for (std::size_t r = 0; r < in.regions.size(); ++r) {
+    std::vector<std::size_t> elements, nodes;
+    gmsh::model::mesh::getElementsByType(4, elements, nodes, volumes[r]); // 4: 4-node tetrahedron
+    for (std::size_t k = 0; k + 3 < nodes.size(); k += 4)
+      out.tetrahedra[r].push_back({index.at(nodes[k]), index.at(nodes[k + 1]),
+                                   index.at(nodes[k + 2]), index.at(nodes[k + 3])});
+  }
+  return out;
+}
+
 } // namespace symmesh::gen
 
-/// The module's one entry point (looked up by gmsh_loader.cpp). Errors come back as text: no
+/// The module's entry points (looked up by gmsh_loader.cpp). Errors come back as text: no
 /// exception crosses the module boundary.
 extern "C" __attribute__((visibility("default"))) int
 symmesh_mesh_with_gmsh(const symmesh::gen::PlanarRegions* in, double size,
                        symmesh::gen::GmshTriangles* out, std::string* error) noexcept {
   try {
     *out = symmesh::gen::mesh_with_gmsh_in_module(*in, size);
+    return 0;
+  } catch (const std::exception& e) {
+    *error = e.what();
+  } catch (...) {
+    *error = "Gmsh failed";
+  }
+  return 1;
+}
+
+/// The 3D entry point, the same way (spec/generation.md#gmsh-3d).
+extern "C" __attribute__((visibility("default"))) int
+symmesh_mesh_with_gmsh_3d(const symmesh::gen::ClosedSurfaces* in, double size,
+                          symmesh::gen::GmshTetrahedra* out, std::string* error) noexcept {
+  try {
+    *out = symmesh::gen::mesh_with_gmsh_3d_in_module(*in, size);
     return 0;
   } catch (const std::exception& e) {
     *error = e.what();

@@ -7,6 +7,10 @@
 /// Gmsh's 2D Delaunay algorithm (`Mesh.Algorithm = 5`, `-algo del2d`) at `Mesh.MeshSizeMax =
 /// size`, on one thread. Gmsh has no smallest-angle parameter; quality is measured afterwards.
 ///
+/// In 3D (spec/generation.md#gmsh-3d) the regions come as closed triangulated surfaces, which
+/// become a discrete Gmsh model — the triangles are the surfaces' mesh, kept as they are — and
+/// each region is tetrahedralized by Gmsh's 3D Delaunay algorithm (`Mesh.Algorithm3D = 1`).
+///
 /// Gmsh is loaded only when this baseline runs: it lives in the module libsymmesh_gmsh.so,
 /// opened with dlopen(RTLD_LOCAL). Linking libgmsh into symmesh cost every command ~50 ms of
 /// symbol binding at start-up (its dependency tree), and libgmsh carries its own copy of
@@ -36,6 +40,27 @@ struct GmshTriangles {
   std::vector<std::vector<std::array<std::size_t, 3>>> triangles;
 };
 
+/// Regions of a 3D geometry by their closed boundary surfaces over one shared point array. A
+/// triangle between two regions appears in both regions' lists.
+struct ClosedSurfaces {
+  std::vector<std::array<double, 3>> points; ///< pairwise distinct, all used by some triangle
+  struct Region {
+    int id = 1;
+    std::vector<std::array<std::size_t, 3>> triangles; ///< any orientation
+  };
+  std::vector<Region> regions;
+};
+
+struct GmshTetrahedra {
+  /// The input points first, in input order and with the same coordinates; then Gmsh's points.
+  std::vector<std::array<double, 3>> nodes;
+  /// Per region (same order as the input): tetrahedra in node indices, Gmsh's orientation.
+  std::vector<std::vector<std::array<std::size_t, 4>>> tetrahedra;
+  /// Building the Gmsh model and generate(3), measured in the module: the mesher's own time,
+  /// without loading the module (libgmsh's start-up) or reading the mesh back.
+  double seconds = 0;
+};
+
 /// \pre every region's edges form vertex-disjoint simple closed curves; size > 0. Throws
 /// MeshingError (triangle_mesher.h) otherwise, when Gmsh fails, or when the module cannot be
 /// loaded.
@@ -43,5 +68,15 @@ GmshTriangles mesh_with_gmsh(const PlanarRegions& regions, double size);
 
 /// The implementation inside the module (gmsh_mesher.cpp); callers use mesh_with_gmsh.
 GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& regions, double size);
+
+/// Gmsh's 3D Delaunay on the regions' closed surfaces, the surface triangles kept as Gmsh's
+/// boundary mesh (spec/generation.md#gmsh-3d). Gmsh may still change the boundary (its boundary
+/// recovery can add Steiner points), so the caller checks the result against the surfaces.
+/// \pre each triangle lies in one or two regions' lists; size > 0. Throws MeshingError otherwise,
+/// when Gmsh fails, or when the module cannot be loaded.
+GmshTetrahedra mesh_with_gmsh_3d(const ClosedSurfaces& regions, double size);
+
+/// The implementation inside the module (gmsh_mesher.cpp); callers use mesh_with_gmsh_3d.
+GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& regions, double size);
 
 } // namespace symmesh::gen

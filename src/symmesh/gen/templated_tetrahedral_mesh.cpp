@@ -7,6 +7,7 @@
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/gen/generation_support.h"
+#include "symmesh/gen/gmsh_mesher.h"
 #include "symmesh/gen/pipeline_stages.h"
 #include "symmesh/gen/rotation_order.h"
 #include "symmesh/gen/shared_vertex_bookkeeping.h"
@@ -481,22 +482,25 @@ FT carrier_volume(const core::ElementComplex<FT, 3>& c) {
   return six / FT(6);
 }
 
-/// The conventional baseline of Section 7.1 in 3D (spec/generation.md#conventional-3d): the same
-/// mesher with the same switches on the whole geometry. The boundaries of AT's regions — the
-/// templates' surface meshes placed by the instances and identified through the SVB; triangles
-/// between two instances of one region are left out, the whole-geometry mesher does not see the
-/// slices — are meshed by one TetGen call with a region seed inside each instance (-A); its
-/// boundary is checked to be that surface exactly (the adapter). The result is
-/// stored as one template per region, instanced once by the identity, whose shared TetGen vertices
-/// are the SVB tables; it is conforming by construction (one tetrahedralization), so the
-/// certificate is the adapter's boundary check.
+/// The boundaries of AT's regions as one surface (spec/generation.md#conventional-3d, #gmsh-3d):
+/// the templates' surface meshes placed by the instances (each point rounded once from its exact
+/// image) and identified through the SVB; a triangle between two instances of one region is left
+/// out (a whole-geometry mesher does not see the slices), one between two regions kept once.
+/// `sides` gives, per kept triangle, the region(s) it bounds. The seeds are a point strictly
+/// inside each instance (for TetGen -A).
+struct WholeSurface {
+  SurfaceInput surface;
+  struct Sides {
+    int region = 0, other = 0;
+    bool interface = false; ///< between `region` and `other`; else on the outer boundary
+  };
+  std::vector<Sides> sides;
+};
+
 template <class FT>
-void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
-                const std::vector<SurfaceBoundary<FT>>& boundaries, const GenerationOptions& o,
-                GenerationResult& r) {
-  const auto t0 = Clock::now();
-  const long f0 = minor_faults();
-  if (o.progress) o.progress->stage("whole-geometry meshing (TetGen)", 0, "");
+WholeSurface whole_surface(const core::TemplatedStructure<FT, 3>& x,
+                           const std::vector<SurfaceBoundary<FT>>& boundaries,
+                           const GenerationResult& r) {
   // Global surface vertices: union-find over (instance, boundary vertex) with the SVB.
   std::vector<std::size_t> first;
   std::vector<core::InstanceId> ids;
@@ -517,7 +521,7 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
   // slices), so only triangles met once, or by instances of two regions, are kept.
   struct Face {
     std::array<std::size_t, 3> roots;
-    int region = 0, count = 0;
+    int region = 0, other = 0, count = 0;
     bool two_regions = false;
   };
   std::map<std::array<std::size_t, 3>, Face> faces;
@@ -529,13 +533,17 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
       for (int k = 0; k < 3; ++k) g[std::size_t(k)] = uf.find(first[a] + c[std::size_t(k)]);
       auto key = g;
       std::sort(key.begin(), key.end());
-      auto [it, fresh] = faces.emplace(key, Face{g, region, 0, false});
+      auto [it, fresh] = faces.emplace(key, Face{g, region, region, 0, false});
       if (fresh) order.push_back(key);
       ++it->second.count;
-      it->second.two_regions = it->second.two_regions || it->second.region != region;
+      if (it->second.region != region) {
+        it->second.two_regions = true;
+        it->second.other = region;
+      }
     }
   }
-  SurfaceInput s;
+  WholeSurface w;
+  SurfaceInput& s = w.surface;
   std::map<std::size_t, std::size_t> global; // class root -> surface point
   std::map<std::size_t, std::size_t> owner;  // class root -> (instance, vertex) position
   for (std::size_t a = 0; a < ids.size(); ++a)
@@ -556,6 +564,7 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
     const auto& f = faces.at(key);
     if (f.count > 1 && !f.two_regions) continue;
     s.triangles.push_back({point_of(f.roots[0]), point_of(f.roots[1]), point_of(f.roots[2])});
+    w.sides.push_back({f.region, f.other, f.two_regions});
   }
   for (std::size_t a = 0; a < ids.size(); ++a) {
     const auto& t = x.tf(ids[a]);
@@ -571,10 +580,14 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
       break;
     }
   }
-  TetrahedralMeshingParameters p;
-  p.size = o.size;
-  const auto out = mesh_domain_3(s, p);
-  // One template per region; vertices numbered per region in global order.
+  return w;
+}
+
+/// Stores a tetrahedralization of the whole geometry (spec/generation.md#conventional-3d,
+/// #gmsh-3d) as one template per region (vertices numbered per region in global order),
+/// instanced once by the identity, and the vertices two regions share as the SVB tables.
+/// Returns the number of regions.
+std::size_t store_by_region(const TetrahedralMeshOutput& out, GenerationResult& r) {
   std::map<int, std::vector<std::size_t>> by_region;
   for (std::size_t c = 0; c < out.tetrahedra.size(); ++c) by_region[out.region[c]].push_back(c);
   auto& tm = r.templated.templated;
@@ -612,20 +625,128 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
           {mesh::IndexType(a), mesh::IndexType(b), mesh::IndexType(r.templated.tables.size())});
       r.templated.tables.push_back(std::move(table));
     }
+  return by_region.size();
+}
+
+/// The conventional baseline of Section 7.1 in 3D (spec/generation.md#conventional-3d): the same
+/// mesher with the same switches on the whole geometry. The boundaries of AT's regions
+/// (whole_surface) are meshed by one TetGen call with a region seed inside each instance (-A);
+/// its boundary is checked to be that surface exactly (the adapter). The result is stored as one
+/// template per region, instanced once by the identity, whose shared TetGen vertices are the SVB
+/// tables; it is conforming by construction (one tetrahedralization), so the certificate is the
+/// adapter's boundary check.
+template <class FT>
+void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
+                const std::vector<SurfaceBoundary<FT>>& boundaries, const GenerationOptions& o,
+                GenerationResult& r) {
+  const auto t0 = Clock::now();
+  const long f0 = minor_faults();
+  if (o.progress) o.progress->stage("whole-geometry meshing (TetGen)", 0, "");
+  const auto s = whole_surface(x, boundaries, r).surface;
+  TetrahedralMeshingParameters p;
+  p.size = o.size;
+  const auto out = mesh_domain_3(s, p);
+  const std::size_t regions = store_by_region(out, r);
   r.timings.template_meshing = seconds_since(t0);
   r.timings.page_faults.template_meshing = minor_faults() - f0;
   r.lemma_4_2_holds = true; // one tetrahedralization whose boundary was checked by the adapter
   if (o.progress)
     o.progress->message("whole geometry: " + std::to_string(out.tetrahedra.size()) +
-                        " tetrahedra in " + std::to_string(by_region.size()) + " regions");
+                        " tetrahedra in " + std::to_string(regions) + " regions");
 }
 
+/// The Gmsh peer in 3D (spec/generation.md#gmsh-3d): the region surfaces of the conventional
+/// baseline (whole_surface: the same boundary meshes), each region's closed surface handed to
+/// Gmsh's 3D Delaunay as a discrete volume whose surface mesh is kept. Stored as mesh_whole
+/// stores TetGen's result. Not certified in exact arithmetic: Gmsh's boundary is checked
+/// combinatorially to be the input surface (every input triangle a face, every boundary or
+/// region-interface face an input triangle; otherwise MeshingError, exit 2), and
+/// `lemma_4_2_holds` is that check plus no triangle in more than two tetrahedra (the regions
+/// share their interface triangles by node ids, so AT is conforming).
+template <class FT>
+void mesh_whole_by_gmsh(const core::TemplatedStructure<FT, 3>& x,
+                        const std::vector<SurfaceBoundary<FT>>& boundaries,
+                        const GenerationOptions& o, GenerationResult& r) {
+  if (o.progress) o.progress->stage("whole-geometry meshing (Gmsh)", 0, "");
+  const auto w = whole_surface(x, boundaries, r);
+  ClosedSurfaces in;
+  in.points = w.surface.points;
+  std::map<int, std::size_t> slot; // region id -> position in in.regions (ascending ids)
+  for (const auto& s : w.sides) {
+    slot.emplace(s.region, 0);
+    slot.emplace(s.other, 0);
+  }
+  for (auto& [id, k] : slot) {
+    k = in.regions.size();
+    in.regions.push_back({id, {}});
+  }
+  for (std::size_t k = 0; k < w.sides.size(); ++k) {
+    in.regions[slot.at(w.sides[k].region)].triangles.push_back(w.surface.triangles[k]);
+    if (w.sides[k].interface)
+      in.regions[slot.at(w.sides[k].other)].triangles.push_back(w.surface.triangles[k]);
+  }
+  long f0 = minor_faults();
+  const auto g = mesh_with_gmsh_3d(in, o.size);
+  r.timings.template_meshing = g.seconds; // the module's own span: model build and generate(3)
+  r.timings.page_faults.template_meshing = minor_faults() - f0;
+  const auto t0 = Clock::now();
+  f0 = minor_faults();
+  TetrahedralMeshOutput out;
+  out.points = g.nodes;
+  for (std::size_t k = 0; k < in.regions.size(); ++k)
+    for (const auto& c : g.tetrahedra[k]) {
+      out.tetrahedra.push_back(c);
+      out.region.push_back(in.regions[k].id);
+    }
+  if (const auto f = boundary_mismatch(w.surface, out)) {
+    std::ostringstream why;
+    if (*f < w.surface.triangles.size())
+      why << "Gmsh changed the boundary: surface triangle " << *f << " ("
+          << w.surface.triangles[*f][0] << ", " << w.surface.triangles[*f][1] << ", "
+          << w.surface.triangles[*f][2] << ") is not a face of its mesh (split or lost)";
+    else
+      why << "Gmsh changed the boundary: its mesh has a boundary or region-interface face that "
+             "is no surface triangle (a Steiner point on the boundary)";
+    throw MeshingError(why.str());
+  }
+  // Triangles in more than two tetrahedra: runs of three equal faces in the sorted face list.
+  std::vector<std::array<std::size_t, 3>> faces;
+  faces.reserve(4 * out.tetrahedra.size());
+  for (const auto& c : out.tetrahedra)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<std::size_t, 3> f{};
+      for (int k = 0, j = 0; k < 4; ++k)
+        if (k != skip) f[std::size_t(j++)] = c[std::size_t(k)];
+      std::sort(f.begin(), f.end());
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  std::size_t crowded = 0;
+  for (std::size_t k = 2; k < faces.size(); ++k)
+    if (faces[k] == faces[k - 2] && (k < 3 || faces[k] != faces[k - 3])) ++crowded;
+  const std::size_t regions = store_by_region(out, r);
+  for (auto& t : r.templated.templated.templates) orient_tetrahedra_positively(t.mesh);
+  r.timings.certificate = seconds_since(t0);
+  r.timings.page_faults.certificate = minor_faults() - f0;
+  r.lemma_4_2_holds = crowded == 0;
+  if (!r.lemma_4_2_holds)
+    r.lemma_4_2_failure = std::to_string(crowded) + " triangles of Gmsh's mesh lie in more than "
+                                                    "two tetrahedra (its region meshes overlap)";
+  if (o.progress)
+    o.progress->message("gmsh: " + std::to_string(out.tetrahedra.size()) + " tetrahedra in " +
+                        std::to_string(regions) + " regions");
+}
+
+/// Which mesher makes the volume mesh: one TetGen call per template (Algorithm 5.7), or the
+/// whole geometry at once by TetGen (#conventional-3d) or by Gmsh (#gmsh-3d).
+enum class Whole { no, tetgen, gmsh };
+
 /// `rotational`: Section 6.3 with Algorithm 6.2 in 3D (spec/generation.md#rotational-3d).
-/// `whole`: the conventional baseline (#conventional-3d): the same boundary meshes, then one
-/// TetGen call on the whole geometry instead of one per template.
+/// `whole`: the baselines (#conventional-3d, #gmsh-3d): the same boundary meshes, then one
+/// mesher call on the whole geometry instead of one per template.
 template <class FT>
 GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o,
-                            Symmetry symmetry = Symmetry::none, bool whole = false) {
+                            Symmetry symmetry = Symmetry::none, Whole whole = Whole::no) {
   const bool rotational = symmetry == Symmetry::rotational;
   const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
   if (!(o.size > 0) || !std::isfinite(o.size))
@@ -708,8 +829,12 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   r.timings.svb = seconds_since(t0);
   faults.svb = minor_faults() - f0;
 
-  if (whole) {
+  if (whole == Whole::tetgen) {
     mesh_whole(x, boundaries, o, r);
+    return r;
+  }
+  if (whole == Whole::gmsh) {
+    mesh_whole_by_gmsh(x, boundaries, o, r);
     return r;
   }
 
@@ -804,13 +929,20 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     break;
   case Method::conventional:
     // The boundary meshes as the templated method makes them (rotational when it applies).
-    r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none, true);
+    r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none,
+                   Whole::tetgen);
     r.method = "conventional";
+    break;
+  case Method::gmsh:
+    // The peer on the very surfaces the conventional baseline hands TetGen.
+    r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none,
+                   Whole::gmsh);
+    r.method = "gmsh";
     break;
   default:
     throw std::invalid_argument(
-        "--method: only auto, bpp, rotational, reflective, combined and conventional generate 3D "
-        "meshes so far (spec/generation.md#alg-5-7)");
+        "--method: only auto, bpp, rotational, reflective, combined, conventional and gmsh "
+        "generate 3D meshes so far (spec/generation.md#alg-5-7)");
   }
   return r;
 }
