@@ -590,8 +590,15 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
   s.points.assign(all.begin(), all.end());
   add_vertex_faces(s);
   std::vector<std::map<VertexHandle, VertexId>> ids(regions.size());
+  // In the triangulation's order, not the handles' (addresses): the exact comparisons of
+  // vertex_id refine the lazy numbers' intervals, which later roundings read, so their order
+  // must not depend on the heap layout (same input, same bytes).
   for (std::size_t k = 0; k < regions.size(); ++k)
-    for (const auto& [h, p] : lifted[k]) ids[k][h] = vertex_id(s, p);
+    for (auto v = cdts[k].finite_vertices_begin(); v != cdts[k].finite_vertices_end(); ++v)
+      ids[k][v] = vertex_id(s, lifted[k].at(v));
+  // Edges and 2-faces are numbered in an order of their vertex ids, not in the triangulations'
+  // iteration order, which differs between runs (heap layout): the face numbers decide the
+  // order of the line-mesh points, and so the input order of the surface mesher.
   std::map<std::pair<VertexId, VertexId>, std::size_t> edge_of;
   for (std::size_t k = 0; k < regions.size(); ++k) {
     auto& cdt = cdts[k];
@@ -602,11 +609,14 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
       if (!inside[k].count(f) && !inside[k].count(f->neighbor(i))) continue;
       VertexId a = ids[k].at(f->vertex(cdt.cw(i))), b = ids[k].at(f->vertex(cdt.ccw(i)));
       if (a > b) std::swap(a, b);
-      if (edge_of.count({a, b})) continue;
-      edge_of[{a, b}] = s.faces.size();
-      add_edge_face(s, a, b);
+      edge_of.emplace(std::make_pair(a, b), 0);
     }
   }
+  for (auto& [ab, index] : edge_of) {
+    index = s.faces.size();
+    add_edge_face(s, ab.first, ab.second);
+  }
+  std::vector<BoundaryFace> facets;
   for (std::size_t k = 0; k < regions.size(); ++k) {
     auto& cdt = cdts[k];
     std::set<FaceHandle> seen;
@@ -643,10 +653,16 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
       std::sort(face.pieces.begin(), face.pieces.end());
       face.vertices.assign(verts.begin(), verts.end());
       face.closure.assign(closure.begin(), closure.end());
-      const auto& p0 = face.pieces.front();
-      s.rep.push_back(centroid<FT, 3>({s.points[p0.v[0]], s.points[p0.v[1]], s.points[p0.v[2]]}));
-      s.faces.push_back(std::move(face));
+      facets.push_back(std::move(face));
     }
+  }
+  // Distinct 2-faces have distinct vertex sets (they are separated by constrained edges).
+  std::sort(facets.begin(), facets.end(),
+            [](const BoundaryFace& x, const BoundaryFace& y) { return x.vertices < y.vertices; });
+  for (auto& face : facets) {
+    const auto& p0 = face.pieces.front();
+    s.rep.push_back(centroid<FT, 3>({s.points[p0.v[0]], s.points[p0.v[1]], s.points[p0.v[2]]}));
+    s.faces.push_back(std::move(face));
   }
   return s;
 }

@@ -145,11 +145,16 @@ FacetMesh<FT> mesh_facet(const core::BoundarySubdivision<FT, 3>& sd, const Surfa
     for (std::size_t k = 0; k + 1 < ids.size(); ++k)
       in.segments.push_back({point(ids[k]), point(ids[k + 1])});
   }
-  // An exact orthogonal frame of the face's plane: u along a piece edge, v = n × u in the plane.
-  const auto& piece = face.pieces.at(0);
-  const P3<FT> p0 = sd.points[piece.v[0]];
-  const P3<FT> u = sd.points[piece.v[1]] - p0;
-  const P3<FT> v = cross<FT>(cross<FT>(u, sd.points[piece.v[2]] - p0), u);
+  // An exact orthogonal frame of the face's plane, from its vertices (not its pieces, whose
+  // triangulation need not be canonical): p0 its first vertex, u towards its second,
+  // v = n × u in the plane with n from the first vertex off the line.
+  const auto& vs = face.vertices;
+  const P3<FT> p0 = sd.points[vs.at(0)];
+  const P3<FT> u = sd.points[vs.at(1)] - p0;
+  P3<FT> n = cross<FT>(u, sd.points[vs.at(2)] - p0);
+  for (std::size_t k = 3; k < vs.size() && n == core::zero_point<FT, 3>(); ++k)
+    n = cross<FT>(u, sd.points[vs[k]] - p0);
+  const P3<FT> v = cross<FT>(n, u);
   const double lu = std::sqrt(rounded(core::dot<FT, 3>(u, u)));
   const double lv = std::sqrt(rounded(core::dot<FT, 3>(v, v)));
   for (std::size_t id : out.boundary_ids) {
