@@ -2,11 +2,13 @@
 /// (spec/generation.md#cut): embedding a number into the cut's field K_m, cos/sin of 2πk/n in
 /// it. Internal to gen/.
 #pragma once
+#include "symmesh/core/templated_structure.h"
 #include "symmesh/gen/symmetry_cut.h"
 #include "symmesh/number/cyclotomic.h"
 #include "symmesh/number/subfield_embedding.h"
 
 #include <algorithm>
+#include <numeric>
 #include <string>
 #include <utility>
 
@@ -50,6 +52,41 @@ inline int compare_coefficients(const Cyclotomic& a, const Cyclotomic& b) {
     if (const int c = cmp(u, v); c != 0) return c;
   }
   return 0;
+}
+
+/// The field K_m of a cut (m = lcm(4, the input's fields, n, and 2n for Algorithm 6.5); null when
+/// everything is rational): coordinates, transformations, mirrors and start direction.
+template <int D, class Spec>
+CyclotomicFieldPtr field_for(const core::TemplatedStructure<Cyclotomic, D>& x, const Spec& spec) {
+  long m = 1;
+  const auto take = [&](const Cyclotomic& v) {
+    if (!v.is_rational_mode()) m = std::lcm(m, long(v.field()->m()));
+  };
+  for (const auto& t : x.templates)
+    for (const auto& p : t.mesh.points)
+      for (int i = 0; i < D; ++i) take(p[i]);
+  for (const auto& list : x.instances)
+    for (const auto& s : list)
+      for (int i = 0; i < D; ++i) {
+        take(s.transformation.translation_part()[i]);
+        for (int j = 0; j < D; ++j) take(s.transformation.matrix()[i][j]);
+      }
+  for (const auto& mv : spec.mirrors)
+    for (const auto& v : mv) take(v);
+  if (spec.start)
+    for (const auto& v : *spec.start) take(v);
+  // Quarter turns are rational; other rotations (by 2π/n, and π/n for Algorithm 6.5) need K_m.
+  const auto order = [&](long k) {
+    if (4 % k != 0) m = std::lcm(m, k);
+  };
+  if (spec.rotation_order >= 2) order(spec.rotation_order);
+  if (spec.rotation_order >= 2 && !spec.mirrors.empty()) order(2L * spec.rotation_order);
+  if (m == 1) return nullptr;
+  m = std::lcm(m, 4L);
+  if (m > kMaxFieldOrder)
+    throw CutError("the symmetry needs the field K_m with m = " + std::to_string(m) + " > " +
+                   std::to_string(kMaxFieldOrder) + ", the largest supported");
+  return number::CyclotomicField::get(int(m));
 }
 
 } // namespace symmesh::gen::cut_support

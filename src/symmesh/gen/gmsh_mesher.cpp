@@ -75,6 +75,13 @@ bool inside(const std::vector<std::array<double, 2>>& p, const Loop& l, std::arr
   return in;
 }
 
+/// Gmsh reports a failure by an exception of its own and its last logged error.
+[[noreturn]] void throw_gmsh_error() {
+  std::string why;
+  gmsh::logger::getLastError(why);
+  throw MeshingError("Gmsh baseline: " + (why.empty() ? std::string("Gmsh failed") : why));
+}
+
 /// Gmsh's API state is global: initialise on entry, finalise on every exit.
 struct GmshSession {
   GmshSession() {
@@ -141,9 +148,7 @@ GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& in, double size) {
   } catch (const MeshingError&) {
     throw;
   } catch (...) {
-    std::string why;
-    gmsh::logger::getLastError(why);
-    throw MeshingError("Gmsh baseline: " + (why.empty() ? std::string("Gmsh failed") : why));
+    throw_gmsh_error();
   }
   GmshTriangles out;
   std::vector<std::size_t> tags;
@@ -253,9 +258,7 @@ GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& in, double size
   } catch (const MeshingError&) {
     throw;
   } catch (...) {
-    std::string why;
-    gmsh::logger::getLastError(why);
-    throw MeshingError("Gmsh baseline: " + (why.empty() ? std::string("Gmsh failed") : why));
+    throw_gmsh_error();
   }
   GmshTetrahedra out;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -22,6 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 using cut_support::compare_coefficients;
 using cut_support::cos_sin;
 using cut_support::embed;
+using cut_support::field_for;
 using cut_support::kMaxFieldOrder;
 
 // ----- exact arithmetic on points -------------------------------------------------------------
@@ -448,38 +449,6 @@ std::vector<CutPiece> trace_pieces(int region, const std::vector<std::vector<P>>
     return geometric_less(u.outer[0], v.outer[0]);
   });
   return pieces;
-}
-
-CyclotomicFieldPtr field_for(const core::TemplatedStructure<Cyclotomic, 2>& x,
-                             const SymmetrySpec& spec) {
-  long m = 1;
-  const auto take = [&](const Cyclotomic& v) {
-    if (!v.is_rational_mode()) m = std::lcm(m, long(v.field()->m()));
-  };
-  for (const auto& t : x.templates)
-    for (const auto& p : t.mesh.points) take(p[0]), take(p[1]);
-  for (const auto& list : x.instances)
-    for (const auto& s : list) {
-      const auto& tf = s.transformation;
-      for (int i = 0; i < 2; ++i) {
-        take(tf.translation_part()[i]);
-        for (int j = 0; j < 2; ++j) take(tf.matrix()[i][j]);
-      }
-    }
-  for (const auto& mv : spec.mirrors) take(mv[0]), take(mv[1]);
-  if (spec.start) take((*spec.start)[0]), take((*spec.start)[1]);
-  // Quarter turns are rational; other rotations (by 2π/n, and π/n for Algorithm 6.5) need K_m.
-  const auto order = [&](long k) {
-    if (4 % k != 0) m = std::lcm(m, k);
-  };
-  if (spec.rotation_order >= 2) order(spec.rotation_order);
-  if (spec.rotation_order >= 2 && !spec.mirrors.empty()) order(2L * spec.rotation_order);
-  if (m == 1) return nullptr;
-  m = std::lcm(m, 4L);
-  if (m > kMaxFieldOrder)
-    throw CutError("the symmetry needs the field K_m with m = " + std::to_string(m) + " > " +
-                   std::to_string(kMaxFieldOrder) + ", the largest supported");
-  return CyclotomicField::get(int(m));
 }
 
 } // namespace

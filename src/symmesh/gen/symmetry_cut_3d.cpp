@@ -16,6 +16,7 @@ namespace {
 using cut_support::compare_coefficients;
 using cut_support::cos_sin;
 using cut_support::embed;
+using cut_support::field_for;
 using cut_support::kMaxFieldOrder;
 using number::Cyclotomic;
 using number::CyclotomicField;
@@ -284,37 +285,6 @@ void verify_symmetry(const Group3& g, const std::map<int, std::vector<Tet>>& reg
                        " % of its volume stays in the region)");
     }
   }
-}
-
-CyclotomicFieldPtr field_for(const core::TemplatedStructure<Cyclotomic, 3>& x,
-                             const SymmetrySpec3& spec) {
-  long m = 1;
-  const auto take = [&](const Cyclotomic& v) {
-    if (!v.is_rational_mode()) m = std::lcm(m, long(v.field()->m()));
-  };
-  for (const auto& t : x.templates)
-    for (const auto& p : t.mesh.points)
-      for (int i = 0; i < 3; ++i) take(p[i]);
-  for (const auto& list : x.instances)
-    for (const auto& s : list)
-      for (int i = 0; i < 3; ++i) {
-        take(s.transformation.translation_part()[i]);
-        for (int j = 0; j < 3; ++j) take(s.transformation.matrix()[i][j]);
-      }
-  for (const auto& mv : spec.mirrors)
-    for (const auto& v : mv) take(v);
-  if (spec.start) take((*spec.start)[0]), take((*spec.start)[1]);
-  const auto order = [&](long k) {
-    if (4 % k != 0) m = std::lcm(m, k);
-  };
-  if (spec.rotation_order >= 2) order(spec.rotation_order);
-  if (spec.rotation_order >= 2 && !spec.mirrors.empty()) order(2L * spec.rotation_order);
-  if (m == 1) return nullptr;
-  m = std::lcm(m, 4L);
-  if (m > kMaxFieldOrder)
-    throw CutError("the symmetry needs the field K_m with m = " + std::to_string(m) + " > " +
-                   std::to_string(kMaxFieldOrder) + ", the largest supported");
-  return CyclotomicField::get(int(m));
 }
 
 void check_spec(const SymmetrySpec3& spec, const core::TemplatedStructure<Cyclotomic, 3>& x) {
