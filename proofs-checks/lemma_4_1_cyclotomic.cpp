@@ -138,17 +138,17 @@ std::vector<Simplex> transformed_boundary_part(const core::TemplatedStructure<FT
   return out;
 }
 
-/// The generator's promise: well-formed (templates are meshes), and with `eq_4_2` also a
-/// templated structure (no two instances overlap, Eq. 4.2).
-void well_formed(const RotationalStructure& s, bool eq_4_2) {
+/// Lemma 4.1's hypothesis, asserted on every generated input (holds and counterexample alike:
+/// the counterexample drops 'templated mesh', not 'templated structure'): well-formed (templates
+/// are meshes) and no two instances overlap (Eq. 4.2).
+void well_formed(const RotationalStructure& s) {
   SYMMESH_PROOF_ASSERT(s.x.is_well_formed(), record(s), picture(s));
-  if (eq_4_2)
-    SYMMESH_PROOF_ASSERT(!core::find_instance_overlap(s.x).has_value(), record(s), picture(s));
+  SYMMESH_PROOF_ASSERT(!core::find_instance_overlap(s.x).has_value(), record(s), picture(s));
 }
 
 /// (i) on every neighbouring pair.
 void interface_respects(const RotationalStructure& s) {
-  well_formed(s, false);
+  well_formed(s);
   const auto si = core::apply_template(s.x);
   const auto pairs = core::neighbouring_instances(si);
   RC_TAG("n = " + std::to_string(s.n), s.same_radii ? "equal radii" : "different radii");
@@ -165,7 +165,7 @@ void interface_respects(const RotationalStructure& s) {
 
 /// (ii) and (iii) on every neighbouring pair; asserts each if `assert_each`.
 std::pair<bool, bool> templated_mesh_interfaces(const RotationalStructure& s, bool assert_each) {
-  well_formed(s, !assert_each); // the counterexample: a templated structure, not a mesh
+  well_formed(s);
   const auto si = core::apply_template(s.x);
   const SeparateInstances<Cyclotomic, 2> sep(s.x, si);
   bool ii = true, iii = true;

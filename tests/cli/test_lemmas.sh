@@ -8,6 +8,13 @@ n=$(wc -l < "$TMP/stdout")
 [ "$n" -ge 20 ] && pass "$n properties listed" || fail "only $n properties listed"
 expect_exit 0 "Lemma 4.2 passes (40 cases)" -- "$BIN" lemmas --cases 40 --only Lemma_4_2 --quiet --out "$TMP/ce"
 grep -qE '^[0-9]+ passed, 0 failed$' "$TMP/stdout" && pass "closing line" || fail "closing line missing"
+# The whole drop mode (every property with a dropped-hypothesis variant, few seeded cases): each
+# check must fail on the inputs that violate its hypothesis (issue 20: not only Lemma 4.2).
+expect_exit 0 "every dropped hypothesis is caught (all lemmas, 10 cases, seeded)" -- \
+  "$BIN" lemmas --cases 10 --seed 20261125 --drop-hypothesis --quiet --out "$TMP/ce_all"
+grep -qE "^[0-9]+ passed, 0 failed" "$TMP/stdout" && ! grep -q MISSED "$TMP/stdout" \
+  && pass "no dropped hypothesis went unnoticed ($(grep -oE '^[0-9]+ passed' "$TMP/stdout"))" \
+  || fail "a dropped hypothesis was missed: $(grep MISSED "$TMP/stdout" | head -3)"
 expect_exit 0 "dropped hypothesis of Lemma 4.2 is caught" -- "$BIN" lemmas --cases 40 --only Lemma_4_2 --drop-hypothesis --quiet --out "$TMP/ce"
 grep -q caught "$TMP/stdout" && ! grep -q MISSED "$TMP/stdout" && pass "every check caught" || fail "a dropped hypothesis was missed"
 ce=$(ls "$TMP"/ce/Lemma_4_2_sufficiency_2d_dropped.json 2>/dev/null | head -1)
