@@ -306,6 +306,30 @@ SvbPairs mapping_pairs_3(const core::BoundaryPatchPartition<FT, 3>& bpp, std::si
   return pairs;
 }
 
+/// Where surface triangle k of template t lies, for an error message: its boundary patch (the
+/// ids of `symmesh bpp` in the whole structure's partition; the symmetric methods partition only
+/// some copies), its subdivision face and a point of it.
+template <class FT>
+std::string boundary_place(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                           const SurfaceBoundary<FT>& tb, std::size_t t, std::size_t k) {
+  if (k >= tb.triangles.size()) return "";
+  const std::size_t f = tb.triangle_face[k];
+  std::string patch = "?";
+  for (std::size_t p = 0; p < bpp.patches.size(); ++p)
+    if (bpp.patches[p].template_index == t &&
+        std::binary_search(bpp.patches[p].faces.begin(), bpp.patches[p].faces.end(), f))
+      patch = std::to_string(p); // the "id" of symmesh bpp
+  std::ostringstream at;
+  at.precision(6);
+  at << ", boundary patch " << patch << ", subdivision face " << f << ", near (";
+  for (int d = 0; d < 3; ++d) {
+    double c = 0;
+    for (std::size_t v : tb.triangles[k]) c += rounded(tb.exact[v][d]) / 3;
+    at << (d ? ", " : "") << c;
+  }
+  return at.str() + ")";
+}
+
 /// Lemma 4.2, exactly, on the templates' boundary complexes (spec/lemmas.md#lemma-4-2-boundary):
 /// the instances' interiors are disjoint (checked before meshing) and TetGen kept every template
 /// boundary as its surface mesh (checked by the adapter), so AT is conforming iff the structure
@@ -858,6 +882,10 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
     TetrahedralMeshOutput out;
     try {
       out = mesh_domain_3(s, p);
+    } catch (const BoundaryChanged& e) {
+      throw MeshingError("template '" + x.templates[i].name + "'" +
+                         boundary_place(bpp, boundaries[i], i, e.triangle) + ": " + e.what() +
+                         "; nothing written");
     } catch (const MeshingError& e) {
       throw MeshingError("template '" + x.templates[i].name + "': " + e.what());
     }

@@ -145,7 +145,7 @@ TetrahedralMeshOutput run_tetgen(const SurfaceInput& s, std::string switches) {
     else
       why << "TetGen changed the boundary: the mesh has a boundary face that is no input "
              "triangle (a Steiner point on the boundary)";
-    throw MeshingError(why.str());
+    throw BoundaryChanged(why.str(), *f);
   }
   return m;
 }

@@ -47,6 +47,13 @@ struct TetrahedralMeshOutput {
   std::vector<int> region;                            ///< one per tetrahedron
 };
 
+/// TetGen changed the boundary it was told to keep: `triangle` is the input triangle that is no
+/// face of its mesh, or past the input's triangles when a mesh boundary face is no input triangle.
+struct BoundaryChanged : MeshingError {
+  std::size_t triangle;
+  BoundaryChanged(const std::string& what, std::size_t t) : MeshingError(what), triangle(t) {}
+};
+
 /// Regular tetrahedron volume for edge `size`: size³ / (6√2), TetGen's -a bound.
 double volume_bound(double size);
 
