@@ -267,6 +267,12 @@ TEST(IoJsonErrors, MalformedJson) {
   }
 }
 
+TEST(IoJsonErrors, NumberBeyondDoubleRangeIsAnInputError) {
+  // Found by the fuzzer: nlohmann throws out_of_range (not parse_error) for such a token.
+  EXPECT_ERROR(R"({"symmesh": "templated-structure/1", "dimension": 2, "x": 2e2222222222})",
+               "input: ", "out of range");
+}
+
 TEST(IoJsonErrors, TopLevel) {
   EXPECT_ERROR("[1, 2]", "input: expected a JSON object", "");
   EXPECT_ERROR(R"({"dimension": 2, "templates": []})", "input: missing field \"symmesh\"", "");

@@ -1666,6 +1666,15 @@ AnyStructure parse_templated_structure(const std::string& text, const std::strin
     root = json::parse(text, DuplicateKeyGuard(source));
   } catch (const json::parse_error& e) {
     fail_malformed(source, e);
+  } catch (const json::out_of_range& e) {
+    // A JSON number beyond double range ("1e999"): nlohmann reports it as out_of_range, with the
+    // token but no position (found by the fuzzer: it escaped as an uncaught exception).
+    std::string what = e.what();
+    const auto quote = what.find('\'');
+    std::string token = quote == std::string::npos ? what : what.substr(quote);
+    if (token.size() > 40) token = token.substr(0, 37) + "...";
+    fail(source, "malformed JSON: the number " + token +
+                     " is out of range (write exact numbers as strings, e.g. \"1e999\")");
   }
   try {
     expect_object(root, source, "a JSON object at the top level");
