@@ -3,6 +3,7 @@
 
 #include "symmesh/core/delaunay.h"
 #include "symmesh/core/kernel.h"
+#include "symmesh/core/multi_region_mesh.h"
 #include "symmesh/core/respect.h"
 #include "symmesh/core/structure_report.h"
 
@@ -396,4 +397,59 @@ TEST(FindInstanceOverlap, UpToTheRotationAgreesWithAllPairs) {
   const auto twice = structure({p2(0, 0), p2(1, 0), p2(0, 1)}, {p2(0, 0), p2(0, 1), p2(-1, 0)});
   EXPECT_TRUE(find_instance_overlap(twice).has_value());
   EXPECT_TRUE(find_instance_overlap(twice, 4).has_value());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Definition 2.5 (mesh partition), 2.6 (ξ on faces, Eq. 2.4), 2.7 (region interface, Eq. 2.5) on
+// two unit squares side by side, each split by a diagonal, one region per square.
+
+namespace {
+MultiRegionMesh<Exact, 2> two_square_regions() {
+  MultiRegionMesh<Exact, 2> mr;
+  ElementComplex<Exact, 2> cells;
+  cells.points = {p2(0, 0), p2(1, 0), p2(2, 0), p2(0, 1), p2(1, 1), p2(2, 1)};
+  cells.elements = {Simplex{0, 1, 4}, Simplex{0, 4, 3}, Simplex{1, 2, 5}, Simplex{1, 5, 4}};
+  mr.mesh = face_completion(cells);
+  mr.mesh.normalize();
+  mr.cell_region = {
+      {Simplex{0, 1, 4}, 1}, {Simplex{0, 3, 4}, 1}, {Simplex{1, 2, 5}, 2}, {Simplex{1, 4, 5}, 2}};
+  return mr;
+}
+} // namespace
+
+TEST(MultiRegionMesh, XiRegionsAndRegionInterface) {
+  const auto mr = two_square_regions();
+  std::ostringstream why;
+  EXPECT_TRUE(mr.is_valid(&why)) << why.str();
+  // Eq. 2.4: ξ of a face is the union over its co-face cells.
+  EXPECT_EQ(mr.xi(Simplex{1, 4}), (std::set<int>{1, 2}));
+  EXPECT_EQ(mr.xi(Simplex{0}), (std::set<int>{1}));
+  EXPECT_EQ(mr.xi(Simplex{2, 5}), (std::set<int>{2}));
+  // A region is the face completion of its cells (Lemma 2.2: a mesh).
+  EXPECT_EQ(mr.region(1).cells().size(), 2u);
+  EXPECT_TRUE(is_mesh(mr.region(2)));
+  // Eq. 2.5: the interface of regions 1 and 2 is the common edge with its two vertices.
+  const auto interf = mr.region_interface({1, 2});
+  std::vector<Simplex> expected{Simplex{1}, Simplex{4}, Simplex{1, 4}};
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(interf.elements, expected);
+  EXPECT_EQ(mr.region_interface({1}).elements, mr.region(1).elements);
+}
+
+TEST(MultiRegionMesh, MeshPartitionAndItsFailures) {
+  const auto mr = two_square_regions();
+  std::ostringstream why;
+  EXPECT_TRUE(is_mesh_partition(mr.mesh, {mr.region(1), mr.region(2)}, &why)) << why.str();
+  // The parts must cover the mesh exactly ...
+  why.str("");
+  EXPECT_FALSE(is_mesh_partition(mr.mesh, {mr.region(1)}, &why));
+  EXPECT_NE(why.str().find("do not cover"), std::string::npos) << why.str();
+  // ... share no cell ...
+  why.str("");
+  EXPECT_FALSE(is_mesh_partition(mr.mesh, {mr.mesh, mr.region(2)}, &why));
+  EXPECT_NE(why.str().find("share a cell"), std::string::npos) << why.str();
+  // ... and be meshes (face-complete).
+  auto cells_only = mr.region(1);
+  cells_only.elements = cells_only.cells();
+  EXPECT_FALSE(is_mesh_partition(mr.mesh, {cells_only, mr.region(2)}));
 }
