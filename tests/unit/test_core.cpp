@@ -453,3 +453,27 @@ TEST(MultiRegionMesh, MeshPartitionAndItsFailures) {
   cells_only.elements = cells_only.cells();
   EXPECT_FALSE(is_mesh_partition(mr.mesh, {cells_only, mr.region(2)}));
 }
+
+TEST(GeometryConformity, MultiRegionMeshesMustMatchRegionByRegion) {
+  // Def 2.10 with regions: the two split squares against the same rectangle carried by two
+  // cells per square the other way round (other diagonals), regions by square.
+  const auto mesh = two_square_regions();
+  MultiRegionMesh<Exact, 2> geometry;
+  ElementComplex<Exact, 2> cells;
+  cells.points = mesh.mesh.points;
+  cells.elements = {Simplex{0, 1, 3}, Simplex{1, 4, 3}, Simplex{1, 2, 4}, Simplex{2, 5, 4}};
+  geometry.mesh = face_completion(cells);
+  geometry.mesh.normalize();
+  geometry.cell_region = {
+      {Simplex{0, 1, 3}, 1}, {Simplex{1, 3, 4}, 1}, {Simplex{1, 2, 4}, 2}, {Simplex{2, 4, 5}, 2}};
+  EXPECT_TRUE(geometry_conforms(mesh, geometry));
+  // Same underlying space, regions swapped: us(M) = G still, but the regions do not match.
+  EXPECT_TRUE(geometry_conforms(mesh.mesh, geometry.mesh));
+  auto swapped = geometry;
+  for (auto& [c, r] : swapped.cell_region) r = 3 - r;
+  EXPECT_FALSE(geometry_conforms(mesh, swapped));
+  // Other region ids altogether.
+  auto renamed = geometry;
+  for (auto& [c, r] : renamed.cell_region) r += 10;
+  EXPECT_FALSE(geometry_conforms(mesh, renamed));
+}

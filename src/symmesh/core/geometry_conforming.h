@@ -1,6 +1,7 @@
 /// Definition 2.10 (geometry-conformity) and Definition 4.5 (geometry-conforming templated mesh)
 /// for linear geometries — spec/definitions.md#def-2-10, #def-4-5
 #pragma once
+#include "symmesh/core/multi_region_mesh.h"
 #include "symmesh/core/templated_structure.h"
 
 namespace symmesh::core {
@@ -13,6 +14,16 @@ bool geometry_conforms(const ElementComplex<FT, D>& m, const ElementComplex<FT, 
     if (!simplex_covered_by<FT, D>(m.coords(c), g)) return false;
   for (const auto& c : g.cells())
     if (!simplex_covered_by<FT, D>(g.coords(c), m)) return false;
+  return true;
+}
+
+/// Def 2.10 for multi-region meshes: the same region ids, and each region of m geometry-conforms
+/// to the region of g with the same id (so us(M) = G follows, and the regions match).
+template <class FT, int D>
+bool geometry_conforms(const MultiRegionMesh<FT, D>& m, const MultiRegionMesh<FT, D>& g) {
+  if (m.region_ids() != g.region_ids()) return false;
+  for (int i : m.region_ids())
+    if (!geometry_conforms(m.region(i), g.region(i))) return false;
   return true;
 }
 
