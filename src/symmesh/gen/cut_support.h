@@ -89,4 +89,25 @@ CyclotomicFieldPtr field_for(const core::TemplatedStructure<Cyclotomic, D>& x, c
   return number::CyclotomicField::get(int(m));
 }
 
+/// The checks every cut makes of its symmetry spec and input (2D and 3D alike); `max_mirrors`,
+/// `mirrors_text` ("at most two (orthogonal) mirrors") and `start_text` ("ray", "half-plane")
+/// are what differs.
+template <int D, class Spec>
+void check_spec(const Spec& spec, const core::TemplatedStructure<Cyclotomic, D>& x,
+                std::size_t max_mirrors, const std::string& mirrors_text,
+                const std::string& start_text) {
+  const int n = spec.rotation_order;
+  if (n == 1 || n < 0) throw CutError("--rotation: the order must be at least 2");
+  if (n > kMaxFieldOrder)
+    throw CutError("--rotation: the order must be at most " + std::to_string(kMaxFieldOrder));
+  if (spec.mirrors.size() > max_mirrors) throw CutError("--mirror: " + mirrors_text);
+  if (n == 0 && spec.mirrors.empty()) throw CutError("give a rotation order or a mirror to cut by");
+  if (n >= 2 && spec.mirrors.size() > 1)
+    throw CutError("--mirror: with a rotation, give one mirror (Algorithm 6.5)");
+  if (spec.start && (n == 0 || !spec.mirrors.empty()))
+    throw CutError("--start: the starting " + start_text + " is for a rotation without mirror");
+  if (!x.all_of_kind(core::TemplateKind::geometry))
+    throw CutError("the input must be a templated geometry (kind \"geometry\")");
+}
+
 } // namespace symmesh::gen::cut_support

@@ -495,18 +495,8 @@ double smallest_new_angle_deg(const std::vector<std::array<double, 4>>& segments
 
 CutResult cut_to_fundamental_piece(const core::TemplatedStructure<Cyclotomic, 2>& x,
                                    const SymmetrySpec& spec) {
+  cut_support::check_spec(spec, x, 2, "at most two (orthogonal) mirrors", "ray");
   const int n = spec.rotation_order;
-  if (n == 1 || n < 0) throw CutError("--rotation: the order must be at least 2");
-  if (n > kMaxFieldOrder)
-    throw CutError("--rotation: the order must be at most " + std::to_string(kMaxFieldOrder));
-  if (spec.mirrors.size() > 2) throw CutError("--mirror: at most two (orthogonal) mirrors");
-  if (n == 0 && spec.mirrors.empty()) throw CutError("give a rotation order or a mirror to cut by");
-  if (n >= 2 && spec.mirrors.size() > 1)
-    throw CutError("--mirror: with a rotation, give one mirror (Algorithm 6.5)");
-  if (spec.start && (n == 0 || !spec.mirrors.empty()))
-    throw CutError("--start: the starting ray is for a rotation without mirror");
-  if (!x.all_of_kind(core::TemplateKind::geometry))
-    throw CutError("the input must be a templated geometry (kind \"geometry\")");
 
   Group g;
   g.field = field_for(x, spec);

@@ -287,21 +287,6 @@ void verify_symmetry(const Group3& g, const std::map<int, std::vector<Tet>>& reg
   }
 }
 
-void check_spec(const SymmetrySpec3& spec, const core::TemplatedStructure<Cyclotomic, 3>& x) {
-  const int n = spec.rotation_order;
-  if (n == 1 || n < 0) throw CutError("--rotation: the order must be at least 2");
-  if (n > kMaxFieldOrder)
-    throw CutError("--rotation: the order must be at most " + std::to_string(kMaxFieldOrder));
-  if (spec.mirrors.size() > 3) throw CutError("--mirror: at most three (orthogonal) mirror planes");
-  if (n == 0 && spec.mirrors.empty()) throw CutError("give a rotation order or a mirror to cut by");
-  if (n >= 2 && spec.mirrors.size() > 1)
-    throw CutError("--mirror: with a rotation, give one mirror (Algorithm 6.5)");
-  if (spec.start && (n == 0 || !spec.mirrors.empty()))
-    throw CutError("--start: the starting half-plane is for a rotation without mirror");
-  if (!x.all_of_kind(core::TemplateKind::geometry))
-    throw CutError("the input must be a templated geometry (kind \"geometry\")");
-}
-
 /// The pieces: every instance's carrier clipped to the cone (one piece per instance, so that
 /// each piece's carrier is conforming: an instance's carrier is, and the clipping keeps it so),
 /// points shared exactly.
@@ -333,7 +318,7 @@ std::vector<CutPiece3> cut_by(const std::vector<Part>& parts, const std::vector<
 
 CutResult3 cut_to_fundamental_piece(const core::TemplatedStructure<Cyclotomic, 3>& x,
                                     const SymmetrySpec3& spec) {
-  check_spec(spec, x);
+  cut_support::check_spec(spec, x, 3, "at most three (orthogonal) mirror planes", "half-plane");
   const int n = spec.rotation_order;
   Group3 g;
   g.field = field_for(x, spec);
