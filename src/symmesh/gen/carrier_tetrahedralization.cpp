@@ -4,6 +4,7 @@
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 
+#include "symmesh/core/exact_kernel_of.h"
 #include "symmesh/core/kernel.h"
 #include "symmesh/number/cyclotomic_cgal.h"
 
@@ -18,11 +19,8 @@
 namespace symmesh::gen {
 namespace {
 
-/// Epeck for the rationals; for K_m, Cartesian over its lazy wrapper, so that the predicates are
-/// decided on certified intervals unless degenerate (as in the 2D polygon reader).
 template <class FT>
-using KernelOf = std::conditional_t<std::is_same_v<FT, Exact>, CGAL::Epeck,
-                                    CGAL::Simple_cartesian<CGAL::Lazy_exact_nt<FT>>>;
+using KernelOf = core::ExactKernelOf<FT>;
 
 template <class FT>
 struct Geometry {

@@ -10,6 +10,7 @@
 #include "symmesh/number/subfield_embedding.h"
 
 #include "symmesh/core/element_complex.h"
+#include "symmesh/core/exact_kernel_of.h"
 #include "symmesh/gen/carrier_tetrahedralization.h"
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/number/cyclotomic_cgal.h"
@@ -1009,12 +1010,8 @@ struct Ring {
   std::size_t first = 0;               // global index of pts[0]
 };
 
-/// The CGAL kernel of a number type: Epeck for rationals; for an exact field, Cartesian over its
-/// lazy wrapper, so that the orientation tests of the polygon checks and the triangulation are
-/// decided on certified intervals unless they are degenerate (as Epeck does for the rationals).
 template <class FT>
-using KernelOf = std::conditional_t<std::is_same_v<FT, Exact>, CGAL::Epeck,
-                                    CGAL::Simple_cartesian<CGAL::Lazy_exact_nt<FT>>>;
+using KernelOf = core::ExactKernelOf<FT>;
 template <class FT>
 using P2 = typename KernelOf<FT>::Point_2;
 
