@@ -50,6 +50,10 @@ expect_exit 2 "--method combined refuses a structure without a rotation of order
 grep -q "no copy is a rotation of order >= 3" "$TMP/stderr" || fail "the refusal says why"
 # A PLC input (polygonal faces, two with a hole): the carrier is tetrahedralized internally.
 generate tunnel data/tunnel_boxes_3d.json 6 32 bpp vtu
+# Irregular instance graphs: faces that mappings send onto themselves get symmetric surface
+# meshes (D_4 on a square, C_4 around a hole; spec/generation.md#symmetric-surface-meshes).
+generate twisted_cubes data/twisted_cubes_3d.json 6 30 bpp vtu
+generate twisted_tunnel data/twisted_tunnel_boxes_3d.json 12 60 bpp msh 0.25
 expect_exit 2 "a PLC with a missing face is refused naming a face" -- \
   "$BIN" generate tests/data/bad/open_plc_3d.json --size 0.15 -o "$TMP/open.vtu"
 grep -q "templates\[0\].faces\[[0-9]*\]: the surface is not closed" "$TMP/stderr" \

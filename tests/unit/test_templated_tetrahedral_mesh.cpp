@@ -110,7 +110,10 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, TetrahedralGeneration,
                          ::testing::Values(Case{"cube_mirrored_halves_3d.json", 2, 10},
                                            Case{"translated_boxes_3d.json", 2, 10},
                                            Case{"rotational_slice_3d.json", 4, 16},
-                                           Case{"tunnel_boxes_3d.json", 6, 32}),
+                                           Case{"tunnel_boxes_3d.json", 6, 32},
+                                           // irregular: symmetric surface meshes (D_4, C_4)
+                                           Case{"twisted_cubes_3d.json", 6, 30},
+                                           Case{"twisted_tunnel_boxes_3d.json", 12, 60}),
                          // A name from the file, not the printed struct: that prints the address
                          // of the file name, so ctest's discovered names would not match at run
                          // time and the cases would run nothing.
@@ -134,7 +137,8 @@ TEST(TetrahedralGeneration, TemplatedMeshIsSmallerThanItsStructureInstance) {
 }
 
 TEST(TetrahedralGeneration, PerturbedSurfaceMeshFailsTheCertificate) {
-  for (const char* file : {"translated_boxes_3d.json", "rotational_slice_3d.json"}) {
+  for (const char* file :
+       {"translated_boxes_3d.json", "rotational_slice_3d.json", "twisted_cubes_3d.json"}) {
     const auto x = fixture(file);
     gen::GenerationOptions o;
     o.size = 0.2;

@@ -25,9 +25,9 @@ namespace symmesh::gen {
 /// same pipeline and TetGen with the same switches). Others throw std::invalid_argument.
 ///
 /// \pre x is a 3D templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
-/// std::invalid_argument for other input, for a face class that a mapping sends onto itself
-/// non-trivially (an irregular instance graph: its surface mesh would have to be symmetric,
-/// which is not implemented yet), and MeshingError when TetGen changes a template boundary.
+/// std::invalid_argument for other input and for a face class whose symmetric surface mesh
+/// cannot be built (spec/generation.md#symmetric-surface-meshes: e.g. a rotation centre on the
+/// face's boundary), and MeshingError when TetGen changes a template boundary.
 GenerationResult generate_tetrahedral_mesh(const core::TemplatedStructure<Exact, 3>& x,
                                            Method method, const GenerationOptions& options);
 GenerationResult generate_tetrahedral_mesh(const core::TemplatedStructure<number::Cyclotomic, 3>& x,

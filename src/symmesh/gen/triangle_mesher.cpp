@@ -14,6 +14,8 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <set>
+#include <utility>
 
 namespace symmesh::gen {
 namespace {
@@ -32,8 +34,15 @@ using Cdt =
     CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
 
-/// in_domain = odd number of boundary crossings from the infinite face (holes are even).
-void mark_by_nesting_parity(Cdt& cdt) {
+/// in_domain = odd number of boundary crossings from the infinite face (holes are even); a cut
+/// (an input vertex pair in `cuts`) is crossed without counting.
+void mark_by_nesting_parity(Cdt& cdt, const std::set<std::pair<std::size_t, std::size_t>>& cuts) {
+  const auto is_cut = [&](Cdt::Face_handle f, int i) {
+    if (cuts.empty()) return false;
+    std::size_t a = f->vertex(Cdt::cw(i))->info().i, b = f->vertex(Cdt::ccw(i))->info().i;
+    if (a > b) std::swap(a, b);
+    return cuts.count({a, b}) > 0;
+  };
   std::map<Cdt::Face_handle, int> level;
   std::deque<std::pair<Cdt::Face_handle, int>> seeds{{cdt.infinite_face(), 0}};
   while (!seeds.empty()) {
@@ -48,7 +57,7 @@ void mark_by_nesting_parity(Cdt& cdt) {
       for (int i = 0; i < 3; ++i) {
         auto n = f->neighbor(i);
         if (level.count(n)) continue;
-        if (cdt.is_constrained(Cdt::Edge(f, i))) {
+        if (cdt.is_constrained(Cdt::Edge(f, i)) && !is_cut(f, i)) {
           seeds.emplace_back(n, l + 1);
         } else {
           level[n] = l;
@@ -113,13 +122,16 @@ TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary, const MeshingPar
   }
   try {
     for (const auto& s : boundary.segments) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
+    for (const auto& s : boundary.cuts) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
   } catch (const Cdt::Intersection_of_constraints_exception&) {
     throw MeshingError("boundary segments cross or pass through a boundary point");
   }
   if (cdt.number_of_vertices() != boundary.points.size())
     throw MeshingError("the mesher inserted points while building the boundary");
   if (cdt.dimension() < 2) throw MeshingError("the boundary encloses no area");
-  mark_by_nesting_parity(cdt);
+  std::set<std::pair<std::size_t, std::size_t>> cuts;
+  for (const auto& s : boundary.cuts) cuts.insert({std::min(s[0], s[1]), std::max(s[0], s[1])});
+  mark_by_nesting_parity(cdt, cuts);
   const double b = std::pow(std::sin(p.min_angle_deg * M_PI / 180.0), 2);
   TriangleMeshOutput out;
   if (p.report_boundary_splits) {

@@ -35,6 +35,9 @@ struct MeshingParameters {
 struct BoundaryInput {
   std::vector<std::array<double, 2>> points;
   std::vector<std::array<std::size_t, 2>> segments; ///< closed boundary curves, any orientation
+  /// Constrained segments inside the domain that do not bound it (they leave the nesting parity
+  /// alone): the cuts of a symmetric surface mesh (spec/generation.md#symmetric-surface-meshes).
+  std::vector<std::array<std::size_t, 2>> cuts;
 };
 
 struct TriangleMeshOutput {
