@@ -16,6 +16,8 @@ void register_lemma_2_2(std::vector<Property>&);
 void register_lemma_2_3(std::vector<Property>&);
 void register_lemma_2_4(std::vector<Property>&);
 void register_lemma_2_5(std::vector<Property>&);
+void register_lemma_2_6(std::vector<Property>&);
+void register_lemma_2_7(std::vector<Property>&);
 void register_lemma_4_1(std::vector<Property>&);
 void register_lemma_4_2(std::vector<Property>&);
 void register_lemma_4_3(std::vector<Property>&);
@@ -42,6 +44,8 @@ const std::vector<Property>& all_properties() {
                          register_lemma_2_3,
                          register_lemma_2_4,
                          register_lemma_2_5,
+                         register_lemma_2_6,
+                         register_lemma_2_7,
                          register_lemma_4_1,
                          register_lemma_4_2,
                          register_lemma_4_3,
