@@ -12,6 +12,7 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev
   libgmsh-dev gmsh
   libtet1.5-dev
+  petsc-dev openmpi-bin
   zlib1g-dev
   python3-meshio python3-matplotlib python3-vtk9
 )

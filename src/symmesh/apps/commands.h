@@ -16,6 +16,7 @@ void add_bpp(CLI::App& app, int& exit_code);
 void add_generate(CLI::App& app, int& exit_code);
 void add_example(CLI::App& app, int& exit_code);
 void add_cut(CLI::App& app, int& exit_code);
+void add_solve(CLI::App& app, int& exit_code);
 
 /// Prints "symmesh: error: <message>" as one line on stderr.
 void print_error(const std::string& message);

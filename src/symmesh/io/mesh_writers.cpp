@@ -171,7 +171,7 @@ void write_vtu(const mesh::StructureInstance& at, const std::string& path,
     indices += std::uint64_t(mesh::vertex_count(t));
   });
   const bool wide_offsets = indices > std::uint64_t(std::numeric_limits<std::int32_t>::max());
-  const std::vector<VtuArray> arrays{
+  std::vector<VtuArray> arrays{
       {"", "Float64", 3, 8, 3 * std::uint64_t(nv)},
       {"connectivity", "Int32", 1, 4, indices},
       {"offsets", wide_offsets ? "Int64" : "Int32", 1, wide_offsets ? 8 : 4, nc},
@@ -179,6 +179,18 @@ void write_vtu(const mesh::StructureInstance& at, const std::string& path,
       {"region", "Int32", 1, 4, nc},
       {"template", "Int32", 1, 4, nc},
       {"instance", "Int32", 1, 4, nc}};
+  constexpr std::size_t first_point_data = 7;
+  for (const auto& [name, v] : o.point_data) {
+    if (!v || v->size() != nv)
+      throw std::logic_error("write_vtu: point data '" + name + "' has the wrong size");
+    arrays.push_back({name, "Float64", 1, 8, nv});
+  }
+  const auto point_data_xml = [&](const auto& tag_of) {
+    if (o.point_data.empty()) return std::string();
+    std::string h = "<PointData Scalars=\"" + o.point_data[0].first + "\">\n";
+    for (std::size_t a = first_point_data; a < arrays.size(); ++a) h += tag_of(a);
+    return h + "</PointData>\n";
+  };
   const auto mode = o.ascii      ? ArrayWriter::Mode::text
                     : o.compress ? ArrayWriter::Mode::zlib
                                  : ArrayWriter::Mode::raw;
@@ -262,6 +274,13 @@ void write_vtu(const mesh::StructureInstance& at, const std::string& path,
         });
         break;
       default:
+        if (a >= first_point_data) {
+          for (double v : *o.point_data[a - first_point_data].second) {
+            w.put(v);
+            w.end_row();
+          }
+          break;
+        }
         for_each_cell_record(at, [&](std::size_t k, std::size_t i, mesh::RegionIdType r, auto) {
           w.put(std::int32_t(a == 4 ? int(r) : a == 5 ? int(i) + 1 : int(k) + 1));
           w.end_row();
@@ -281,16 +300,23 @@ void write_vtu(const mesh::StructureInstance& at, const std::string& path,
       os << "</Points>\n<Cells>\n";
       for (std::size_t a = 1; a <= 3; ++a) inline_array(a);
       os << "</Cells>\n<CellData Scalars=\"region\">\n";
-      for (std::size_t a = 4; a < arrays.size(); ++a) inline_array(a);
-      os << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      for (std::size_t a = 4; a < first_point_data; ++a) inline_array(a);
+      os << "</CellData>\n";
+      if (!o.point_data.empty()) {
+        os << "<PointData Scalars=\"" << o.point_data[0].first << "\">\n";
+        for (std::size_t a = first_point_data; a < arrays.size(); ++a) inline_array(a);
+        os << "</PointData>\n";
+      }
+      os << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
       return;
     }
     const auto appended_head = [&] {
       std::string h = head + "<Points>\n" + tag(0) + "</Points>\n<Cells>\n";
       for (std::size_t a = 1; a <= 3; ++a) h += tag(a);
       h += "</Cells>\n<CellData Scalars=\"region\">\n";
-      for (std::size_t a = 4; a < arrays.size(); ++a) h += tag(a);
-      return h + "</CellData>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
+      for (std::size_t a = 4; a < first_point_data; ++a) h += tag(a);
+      h += "</CellData>\n" + point_data_xml(tag);
+      return h + "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
     };
     if (mode == ArrayWriter::Mode::raw) os << appended_head();
     const auto data_start = data.tellp();

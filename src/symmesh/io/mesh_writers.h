@@ -13,6 +13,8 @@
 #include "symmesh/mesh/structure_instance.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace symmesh::io {
 
@@ -20,6 +22,9 @@ struct MeshFileOptions {
   bool ascii = false;    ///< text instead of binary (.vtu, .msh; .mesh is always text)
   bool compress = false; ///< .vtu only: zlib-compressed appended blocks
   mesh::Progress* progress = nullptr;
+  /// .vtu only: named point-data arrays (one value per vertex of the structure instance, in the
+  /// writer's vertex order), e.g. the solution of `symmesh solve`.
+  std::vector<std::pair<std::string, const std::vector<double>*>> point_data;
 };
 
 void write_vtu(const mesh::StructureInstance& at, const std::string& path,

@@ -1,0 +1,420 @@
+// TCSR assembly and Algorithms 7.1, 7.2 (spec/fem.md#tcsr).
+#include "symmesh/fem/templated_csr.h"
+
+#include "symmesh/fem/p1_element.h"
+#include "symmesh/mesh/structure_instance.h"
+#include "symmesh/mesh/union_find.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace symmesh::fem {
+namespace {
+
+using mesh::IndexType;
+
+/// The facets of cell c (D vertex ids each, sorted) of a simplex mesh.
+template <int D>
+std::array<std::array<GlobalIndex, 3>, D + 1> cell_facets(const mesh::Mesh& m, std::size_t c) {
+  std::array<std::array<GlobalIndex, 3>, D + 1> f{};
+  const IndexType* v = m.cell(c);
+  for (int skip = 0; skip <= D; ++skip) {
+    std::array<GlobalIndex, 3> facet{-1, -1, -1};
+    int n = 0;
+    for (int k = 0; k <= D; ++k)
+      if (k != skip) facet[std::size_t(n++)] = v[k];
+    std::sort(facet.begin(), facet.begin() + D);
+    f[std::size_t(skip)] = facet;
+  }
+  return f;
+}
+
+template <int D>
+TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index) {
+  const auto expected = D == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    if (m.cell_types[c] != expected)
+      throw std::invalid_argument("template " + std::to_string(index) + ", cell " +
+                                  std::to_string(c) + ": P1 assembly needs " +
+                                  (D == 2 ? "triangles" : "tetrahedra") + " only");
+  // Boundary facets: in exactly one cell.
+  std::vector<std::array<GlobalIndex, 3>> facets;
+  facets.reserve(m.cell_count() * (D + 1));
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    for (const auto& f : cell_facets<D>(m, c)) facets.push_back(f);
+  std::sort(facets.begin(), facets.end());
+  TemplateMatrix t;
+  t.vertices = m.vertex_count();
+  std::vector<char> on_boundary(t.vertices, 0);
+  std::vector<std::array<GlobalIndex, 3>> boundary_facets;
+  for (std::size_t k = 0; k < facets.size();) {
+    std::size_t e = k + 1;
+    while (e < facets.size() && facets[e] == facets[k]) ++e;
+    if (e - k > 2)
+      throw std::invalid_argument("template " + std::to_string(index) +
+                                  ": a facet lies in more than two cells");
+    if (e - k == 1) {
+      boundary_facets.push_back(facets[k]);
+      for (int q = 0; q < D; ++q) on_boundary[std::size_t(facets[k][std::size_t(q)])] = 1;
+    }
+    k = e;
+  }
+  t.row_of.assign(t.vertices, -1);
+  for (int pass = 1; pass >= 0; --pass)
+    for (std::size_t v = 0; v < t.vertices; ++v)
+      if (on_boundary[v] == pass) {
+        t.row_of[v] = GlobalIndex(t.vertex_of.size());
+        t.vertex_of.push_back(GlobalIndex(v));
+      }
+  t.boundary = std::size_t(std::count(on_boundary.begin(), on_boundary.end(), 1));
+  for (auto f : boundary_facets) {
+    for (int q = 0; q < D; ++q) f[std::size_t(q)] = t.row_of[std::size_t(f[std::size_t(q)])];
+    t.boundary_facets.push_back(f);
+  }
+  const auto cell_rows = [&](std::size_t c) {
+    std::array<GlobalIndex, 4> r{};
+    for (int k = 0; k <= D; ++k) r[std::size_t(k)] = t.row_of[std::size_t(m.cell(c)[k])];
+    return r;
+  };
+  const auto coords = [&](std::size_t c) {
+    std::array<const double*, D + 1> x{};
+    for (int k = 0; k <= D; ++k) x[std::size_t(k)] = m.vertex(std::size_t(m.cell(c)[k]));
+    return x;
+  };
+  t.stiffness = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows,
+                                [&](std::size_t c) { return p1_stiffness<D>(coords(c)); });
+  t.interior_from.resize(t.vertices);
+  for (std::size_t r = 0; r < t.vertices; ++r) {
+    const auto* begin = t.stiffness.column.data() + t.stiffness.row_start[r];
+    const auto* end = t.stiffness.column.data() + t.stiffness.row_start[r + 1];
+    t.interior_from[r] =
+        std::lower_bound(begin, end, GlobalIndex(t.boundary)) - t.stiffness.column.data();
+  }
+  t.lumped_load.assign(t.vertices, 0.0);
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    std::array<std::array<double, D>, D + 1> g{};
+    const double volume = barycentric_gradients<D>(coords(c), g);
+    for (int k = 0; k <= D; ++k)
+      t.lumped_load[std::size_t(cell_rows(c)[std::size_t(k)])] += volume / (D + 1);
+  }
+  return t;
+}
+
+} // namespace
+
+std::size_t TemplateMatrix::bytes() const {
+  return stiffness.bytes() + (row_of.size() + vertex_of.size()) * sizeof(GlobalIndex) +
+         interior_from.size() * sizeof(std::int64_t) + lumped_load.size() * sizeof(double) +
+         boundary_facets.size() * sizeof(boundary_facets[0]);
+}
+
+GlobalIndex TemplatedCsr::global(std::size_t instance, std::size_t vertex) const {
+  const auto& in = instances[instance];
+  const auto& t = templates[in.template_index];
+  const auto r = std::size_t(t.row_of[vertex]);
+  if (r >= t.boundary) return in.interior_first + GlobalIndex(r - t.boundary);
+  const GlobalIndex g = in.boundary_global[r];
+  return g < 0 ? -1 - g : g;
+}
+
+void multiply_instances(const std::vector<TemplateMatrix>& templates,
+                        const std::vector<InstanceMap>& instances, std::size_t unknowns,
+                        const std::vector<GlobalIndex>& dirichlet, const double* x, double* y,
+                        bool constrained) {
+  std::fill(y, y + unknowns, 0.0);
+  std::vector<double> xb;
+  for (const auto& in : instances) {
+    const auto& t = templates[in.template_index];
+    const auto& k = t.stiffness;
+    const std::size_t nb = t.boundary;
+    xb.resize(nb);
+    for (std::size_t r = 0; r < nb; ++r) {
+      const GlobalIndex g = in.boundary_global[r];
+      xb[r] = g >= 0 ? x[g] : constrained ? 0.0 : x[-1 - g];
+    }
+    // Interior column c (>= nb) is unknown interior_first + c - nb.
+    const double* xi = x + in.interior_first - GlobalIndex(nb);
+    const double kappa = in.coefficient;
+    for (std::size_t r = 0; r < t.vertices; ++r) {
+      double s = 0;
+      const std::int64_t mid = t.interior_from[r], end = k.row_start[r + 1];
+      for (std::int64_t e = k.row_start[r]; e < mid; ++e)
+        s += k.value[std::size_t(e)] * xb[std::size_t(k.column[std::size_t(e)])];
+      for (std::int64_t e = mid; e < end; ++e)
+        s += k.value[std::size_t(e)] * xi[k.column[std::size_t(e)]];
+      if (r >= nb) {
+        y[in.interior_first + GlobalIndex(r - nb)] = kappa * s; // this instance's alone
+      } else {
+        const GlobalIndex g = in.boundary_global[r];
+        if (g >= 0)
+          y[g] += kappa * s;
+        else if (!constrained)
+          y[-1 - g] += kappa * s;
+      }
+    }
+  }
+  if (constrained)
+    for (GlobalIndex d : dirichlet) y[d] = x[d];
+}
+
+void TemplatedCsr::multiply(const double* x, double* y, bool constrained) const {
+  multiply_instances(templates, instances, unknowns, dirichlet, x, y, constrained);
+}
+
+std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
+  std::vector<double> d(unknowns, 0.0);
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const auto& in = instances[i];
+    const auto& t = templates[in.template_index];
+    const auto& k = t.stiffness;
+    for (std::size_t r = 0; r < t.vertices; ++r)
+      for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e)
+        if (std::size_t(k.column[std::size_t(e)]) == r)
+          d[std::size_t(global(i, std::size_t(t.vertex_of[r])))] +=
+              in.coefficient * k.value[std::size_t(e)];
+  }
+  if (constrained)
+    for (GlobalIndex g : dirichlet) d[std::size_t(g)] = 1.0;
+  return d;
+}
+
+CsrMatrix TemplatedCsr::to_csr(bool constrained) const {
+  // Entries with duplicates (shared rows get one run per instance), then merged per row.
+  std::vector<std::int64_t> count(unknowns + 1, 0);
+  const auto row_global = [&](std::size_t i, std::size_t r) {
+    const auto& in = instances[i];
+    const auto& t = templates[in.template_index];
+    if (r >= t.boundary) return in.interior_first + GlobalIndex(r - t.boundary);
+    return in.boundary_global[r];
+  };
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const auto& t = templates[instances[i].template_index];
+    for (std::size_t r = 0; r < t.vertices; ++r) {
+      GlobalIndex g = row_global(i, r);
+      if (g < 0) g = -1 - g;
+      count[std::size_t(g) + 1] += t.stiffness.row_start[r + 1] - t.stiffness.row_start[r];
+    }
+  }
+  for (std::size_t r = 0; r < unknowns; ++r) count[r + 1] += count[r];
+  std::vector<std::int64_t> fill(count.begin(), count.end() - 1);
+  std::vector<std::pair<GlobalIndex, double>> entries(std::size_t(count[unknowns]));
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const auto& in = instances[i];
+    const auto& t = templates[in.template_index];
+    const auto& k = t.stiffness;
+    for (std::size_t r = 0; r < t.vertices; ++r) {
+      GlobalIndex g = row_global(i, r);
+      const bool dirichlet_row = g < 0;
+      if (g < 0) g = -1 - g;
+      for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e) {
+        GlobalIndex c = row_global(i, std::size_t(k.column[std::size_t(e)]));
+        const bool dirichlet_column = c < 0;
+        if (c < 0) c = -1 - c;
+        double v = in.coefficient * k.value[std::size_t(e)];
+        if (constrained && (dirichlet_row || dirichlet_column)) v = 0; // identity added below
+        entries[std::size_t(fill[std::size_t(g)]++)] = {c, v};
+      }
+    }
+  }
+  CsrMatrix a;
+  a.rows = unknowns;
+  a.row_start.assign(unknowns + 1, 0);
+  for (std::size_t r = 0; r < unknowns; ++r) {
+    auto* begin = entries.data() + count[r];
+    auto* end = entries.data() + count[r + 1];
+    std::sort(begin, end, [](const auto& p, const auto& q) { return p.first < q.first; });
+    for (auto* e = begin; e != end; ++e) {
+      if (!a.column.empty() && a.row_start[r] < std::int64_t(a.column.size()) &&
+          a.column.back() == e->first) {
+        a.value.back() += e->second;
+      } else {
+        a.column.push_back(e->first);
+        a.value.push_back(e->second);
+      }
+    }
+    a.row_start[r + 1] = std::int64_t(a.column.size());
+  }
+  if (constrained)
+    for (GlobalIndex d : dirichlet) {
+      auto* begin = a.column.data() + a.row_start[std::size_t(d)];
+      auto* end = a.column.data() + a.row_start[std::size_t(d) + 1];
+      a.value[std::size_t(std::lower_bound(begin, end, d) - a.column.data())] = 1.0;
+    }
+  return a;
+}
+
+void TemplatedCsr::set_dirichlet(std::vector<GlobalIndex> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  dirichlet = std::move(nodes);
+  for (auto& in : instances)
+    for (auto& g : in.boundary_global) {
+      const GlobalIndex u = g < 0 ? -1 - g : g;
+      g = std::binary_search(dirichlet.begin(), dirichlet.end(), u) ? -1 - u : u;
+    }
+}
+
+std::size_t TemplatedCsr::bytes() const {
+  std::size_t b = dirichlet.size() * sizeof(GlobalIndex);
+  for (const auto& t : templates) b += t.bytes();
+  for (const auto& in : instances) b += in.bytes();
+  return b;
+}
+
+bool TemplatedCsr::is_valid(std::ostream* why) const {
+  const auto fail = [&](const std::string& m) {
+    if (why) *why << "TemplatedCsr: " << m;
+    return false;
+  };
+  for (const auto& t : templates) {
+    if (!t.stiffness.is_valid(why)) return false;
+    if (t.boundary > t.vertices || t.row_of.size() != t.vertices ||
+        t.vertex_of.size() != t.vertices || t.stiffness.rows != t.vertices)
+      return fail("template sizes do not match");
+  }
+  for (const auto& in : instances) {
+    if (in.template_index >= templates.size()) return fail("instance of a missing template");
+    const auto& t = templates[in.template_index];
+    if (in.boundary_global.size() != t.boundary) return fail("boundary map size");
+    if (in.interior_first < 0 ||
+        std::size_t(in.interior_first) + (t.vertices - t.boundary) > unknowns)
+      return fail("interior range out of bounds");
+    for (GlobalIndex g : in.boundary_global)
+      if ((g < 0 ? -1 - g : g) >= GlobalIndex(unknowns)) return fail("boundary id out of range");
+  }
+  return true;
+}
+
+TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
+                                    const std::function<double(mesh::RegionIdType)>& coefficient) {
+  std::ostringstream why;
+  if (!t.is_valid(&why)) throw std::invalid_argument("templated mesh: " + why.str());
+  TemplatedCsr a;
+  a.dimension = t.templated.point_dimension;
+  if (a.dimension != 2 && a.dimension != 3)
+    throw std::invalid_argument("P1 assembly needs a 2D or 3D templated mesh");
+  for (std::size_t i = 0; i < t.templated.templates.size(); ++i)
+    a.templates.push_back(a.dimension == 2 ? template_matrix<2>(t.templated.templates[i].mesh, i)
+                                           : template_matrix<3>(t.templated.templates[i].mesh, i));
+  // Instances in global (template-major) order; union-find over their boundary rows.
+  std::vector<std::size_t> slot_first{0};
+  for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
+    const auto& tm = t.templated.templates[i];
+    for (std::size_t g = 0; g < tm.instance_count(); ++g) {
+      InstanceMap in;
+      in.template_index = std::uint32_t(i);
+      in.coefficient = coefficient(tm.region_ids[g]);
+      if (!(in.coefficient > 0) || !std::isfinite(in.coefficient))
+        throw std::invalid_argument("the coefficient of region " +
+                                    std::to_string(tm.region_ids[g]) +
+                                    " must be a positive finite number");
+      a.instances.push_back(std::move(in));
+      slot_first.push_back(slot_first.back() + a.templates[i].boundary);
+    }
+  }
+  if (slot_first.back() > std::size_t(std::numeric_limits<GlobalIndex>::max()))
+    throw std::invalid_argument("more than 2^31 boundary unknowns");
+  mesh::UnionFind classes(slot_first.back());
+  for (const auto& id : t.identifications) {
+    const auto& table = t.tables[std::size_t(id.table)];
+    const auto& from = a.templates[table.from_template];
+    const auto& to = a.templates[table.to_template];
+    for (const auto& [p, q] : table.pairs) {
+      const auto rp = std::size_t(from.row_of[std::size_t(p)]);
+      const auto rq = std::size_t(to.row_of[std::size_t(q)]);
+      if (rp >= from.boundary || rq >= to.boundary)
+        throw std::invalid_argument("templated mesh: an identified vertex is not on its "
+                                    "template's boundary");
+      classes.unite(slot_first[std::size_t(id.from_instance)] + rp,
+                    slot_first[std::size_t(id.to_instance)] + rq);
+    }
+  }
+  std::vector<GlobalIndex> number(slot_first.back(), -1);
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < a.instances.size(); ++k) {
+    auto& in = a.instances[k];
+    const auto& tm = a.templates[in.template_index];
+    in.boundary_global.resize(tm.boundary);
+    for (std::size_t r = 0; r < tm.boundary; ++r) {
+      auto& n = number[classes.find(slot_first[k] + r)];
+      if (n < 0) n = GlobalIndex(next++);
+      in.boundary_global[r] = n;
+    }
+    in.interior_first = GlobalIndex(next);
+    next += tm.vertices - tm.boundary;
+    if (next > std::size_t(std::numeric_limits<GlobalIndex>::max()))
+      throw std::invalid_argument("more than 2^31 unknowns");
+  }
+  a.unknowns = next;
+  return a;
+}
+
+CsrMatrix
+assemble_structure_instance_csr(const mesh::TemplatedMeshCompactSvb& t,
+                                const std::function<double(mesh::RegionIdType)>& coefficient,
+                                const TemplatedCsr& numbering) {
+  const mesh::StructureInstance at(t);
+  const int dim = at.dimension();
+  // AT's coordinates and cells, renumbered to the TCSR's unknowns through the instances.
+  std::vector<GlobalIndex> unknown_of(at.vertex_count(), -1);
+  at.for_each_instance([&](const mesh::StructureInstance::Instance& in) {
+    const auto& g = *in.global;
+    for (std::size_t v = 0; v < g.size(); ++v)
+      unknown_of[std::size_t(g[v])] = numbering.global(in.index, v);
+  });
+  std::vector<double> x(numbering.unknowns * std::size_t(dim), 0.0);
+  std::size_t next = 0;
+  at.for_each_vertex([&](const double* p) {
+    for (int d = 0; d < dim; ++d)
+      x[std::size_t(unknown_of[next]) * std::size_t(dim) + std::size_t(d)] = p[d];
+    ++next;
+  });
+  std::vector<std::array<GlobalIndex, 4>> cells;
+  std::vector<double> kappa;
+  at.for_each_cell([&](const mesh::StructureInstance::Instance& in, std::size_t,
+                       const std::array<IndexType, 4>& v) {
+    std::array<GlobalIndex, 4> c{};
+    for (int k = 0; k <= dim; ++k) c[std::size_t(k)] = unknown_of[std::size_t(v[std::size_t(k)])];
+    cells.push_back(c);
+    kappa.push_back(coefficient(in.region));
+  });
+  const auto cell = [&](std::size_t c) { return cells[c]; };
+  if (dim == 2)
+    return assemble_csr<2>(numbering.unknowns, cells.size(), cell, [&](std::size_t c) {
+      std::array<const double*, 3> p{};
+      for (int k = 0; k < 3; ++k) p[std::size_t(k)] = &x[std::size_t(cells[c][std::size_t(k)]) * 2];
+      auto e = p1_stiffness<2>(p);
+      for (auto& row : e)
+        for (auto& v : row) v *= kappa[c];
+      return e;
+    });
+  return assemble_csr<3>(numbering.unknowns, cells.size(), cell, [&](std::size_t c) {
+    std::array<const double*, 4> p{};
+    for (int k = 0; k < 4; ++k) p[std::size_t(k)] = &x[std::size_t(cells[c][std::size_t(k)]) * 3];
+    auto e = p1_stiffness<3>(p);
+    for (auto& row : e)
+      for (auto& v : row) v *= kappa[c];
+    return e;
+  });
+}
+
+CsrMatrix constrain(const CsrMatrix& a, const std::vector<GlobalIndex>& dirichlet) {
+  CsrMatrix b = a;
+  const auto is_dirichlet = [&](GlobalIndex g) {
+    return std::binary_search(dirichlet.begin(), dirichlet.end(), g);
+  };
+  for (std::size_t r = 0; r < b.rows; ++r)
+    for (std::int64_t e = b.row_start[r]; e < b.row_start[r + 1]; ++e) {
+      const GlobalIndex c = b.column[std::size_t(e)];
+      if (is_dirichlet(GlobalIndex(r)) || is_dirichlet(c))
+        b.value[std::size_t(e)] = std::size_t(c) == r ? 1.0 : 0.0;
+    }
+  return b;
+}
+
+} // namespace symmesh::fem
