@@ -36,6 +36,7 @@ bench: deps
 	bash bench/run_lemma42_ngon.sh $(BENCH_BUILD)/bench/bench_lemma42_ngon docs/benchmarks
 	/usr/bin/python3 bench/generate_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
+	/usr/bin/python3 bench/gummel.py $(BENCH_BUILD)/symmesh docs/benchmarks
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

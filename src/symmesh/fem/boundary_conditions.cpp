@@ -20,6 +20,16 @@ bool selects(const BoundarySelector& s, std::size_t instance, const InstanceInfo
   if (s.region && *s.region != in.region) return false;
   if (s.template_index && *s.template_index != in.template_index) return false;
   if (s.instance && *s.instance != instance) return false;
+  if (s.plane)
+    for (int v = 0; v < dim; ++v) {
+      const auto& p = *s.plane;
+      double nx = 0, scale = std::abs(p[3]);
+      for (int d = 0; d < dim; ++d) {
+        nx += p[std::size_t(d)] * x[std::size_t(v)][std::size_t(d)];
+        scale += std::abs(p[std::size_t(d)] * x[std::size_t(v)][std::size_t(d)]);
+      }
+      if (std::abs(nx - p[3]) > 1e-9 * std::max(scale, 1e-300)) return false;
+    }
   if (s.box)
     for (int v = 0; v < dim; ++v)
       for (int d = 0; d < dim; ++d) {
@@ -106,16 +116,17 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
   s.dirichlet_facets.assign(bc.dirichlet.size(), 0);
   s.neumann_facets.assign(bc.neumann.size(), 0);
   std::vector<double> b(a.unknowns, 0.0);
-  std::vector<double> value(a.unknowns, 0.0);
-  std::vector<char> is_dirichlet(a.unknowns, 0);
+  // The last Dirichlet entry that selects a facet at a vertex sets its value (whatever the order
+  // in which the facets are visited: a vertex where two entries meet gets the later entry's value).
+  std::vector<int> entry_of(a.unknowns, -1);
   for_each_facet([&](std::size_t k, const auto& x, const auto& unknowns) {
     ++s.boundary_facets;
     for (std::size_t e = 0; e < bc.dirichlet.size(); ++e)
       if (selects(bc.dirichlet[e].on, k, info[k], x, dim)) {
         ++s.dirichlet_facets[e];
         for (int q = 0; q < dim; ++q) {
-          is_dirichlet[std::size_t(unknowns[std::size_t(q)])] = 1;
-          value[std::size_t(unknowns[std::size_t(q)])] = bc.dirichlet[e].value;
+          int& at = entry_of[std::size_t(unknowns[std::size_t(q)])];
+          at = std::max(at, int(e));
         }
       }
     for (std::size_t e = 0; e < bc.neumann.size(); ++e)
@@ -132,8 +143,12 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
     if (s.neumann_facets[e] == 0)
       throw std::invalid_argument(bc.neumann[e].on.where + ": selects no boundary facet");
   std::vector<GlobalIndex> nodes;
+  std::vector<double> value(a.unknowns, 0.0);
   for (std::size_t g = 0; g < a.unknowns; ++g)
-    if (is_dirichlet[g]) nodes.push_back(GlobalIndex(g));
+    if (entry_of[g] >= 0) {
+      nodes.push_back(GlobalIndex(g));
+      value[g] = bc.dirichlet[std::size_t(entry_of[g])].value;
+    }
   if (nodes.empty())
     throw std::invalid_argument("dirichlet: no Dirichlet data; the pure Neumann problem is "
                                 "singular");
@@ -149,7 +164,7 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
   u = value;
   std::vector<double> au(a.unknowns);
   a.multiply(value.data(), au.data(), false);
-  for (std::size_t g = 0; g < a.unknowns; ++g) b[g] = is_dirichlet[g] ? value[g] : b[g] - au[g];
+  for (std::size_t g = 0; g < a.unknowns; ++g) b[g] = entry_of[g] >= 0 ? value[g] : b[g] - au[g];
   if (summary) *summary = s;
   return b;
 }

@@ -3,9 +3,10 @@
 /// Data are given on facets of the structure instance's boundary (edges in 2D, triangles in 3D)
 /// chosen by selectors: a facet is selected when every given key holds — the region, template or
 /// global instance number of the instance it belongs to, and a closed box holding all its
-/// vertices. An empty selector is the whole boundary. AT's boundary facets are found per
-/// instance from the template's boundary facets, dropping those that a second instance also has
-/// (an interface): no structure-instance mesh is built.
+/// vertices, and a hyperplane n·x = d (a line in 2D) on which all its vertices lie up to a relative
+/// 1e-9 (the vertices of rotated instances are rounded). An empty selector is the whole boundary.
+/// AT's boundary facets are found per instance from the template's boundary facets, dropping those
+/// that a second instance also has (an interface): no structure-instance mesh is built.
 #pragma once
 #include "symmesh/fem/templated_csr.h"
 
@@ -21,6 +22,7 @@ struct BoundarySelector {
   std::optional<mesh::RegionIdType> region;
   std::optional<std::size_t> template_index, instance;
   std::optional<std::array<std::array<double, 3>, 2>> box; ///< min, max (z ignored in 2D)
+  std::optional<std::array<double, 4>> plane;              ///< n (3 entries), d: n·x = d
 };
 
 struct BoundaryCondition {

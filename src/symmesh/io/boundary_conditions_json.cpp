@@ -43,7 +43,7 @@ std::size_t index(const J& j, const std::string& path, std::size_t max) {
 }
 
 fem::BoundarySelector selector(const J& j, const std::string& path) {
-  only_keys(j, path, {"region", "template", "instance", "box"});
+  only_keys(j, path, {"region", "template", "instance", "box", "plane"});
   fem::BoundarySelector s;
   s.where = path;
   if (j.contains("region"))
@@ -72,6 +72,23 @@ fem::BoundarySelector selector(const J& j, const std::string& path) {
       if (box[0][std::size_t(d)] > box[1][std::size_t(d)])
         bad(p, "min[" + std::to_string(d) + "] > max[" + std::to_string(d) + "]");
     s.box = box;
+  }
+  if (j.contains("plane")) {
+    const std::string p = path + ".plane";
+    only_keys(j["plane"], p, {"normal", "offset"});
+    if (!j["plane"].contains("normal")) bad(p, "missing field \"normal\"");
+    const J& n = j["plane"]["normal"];
+    if (!n.is_array() || n.size() < 2 || n.size() > 3)
+      bad(p + ".normal", "expected 2 or 3 numbers");
+    std::array<double, 4> plane{0, 0, 0, 0};
+    double nn = 0;
+    for (std::size_t d = 0; d < n.size(); ++d) {
+      plane[d] = finite(n[d], p + ".normal[" + std::to_string(d) + "]");
+      nn += plane[d] * plane[d];
+    }
+    if (nn == 0) bad(p + ".normal", "the zero vector");
+    if (j["plane"].contains("offset")) plane[3] = finite(j["plane"]["offset"], p + ".offset");
+    s.plane = plane;
   }
   return s;
 }
