@@ -31,7 +31,7 @@ test: build
 
 bench: deps
 	cmake -S . -B $(BENCH_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DSYMMESH_BUILD_TESTS=OFF -DSYMMESH_BUILD_BENCH=ON $(CMAKE_FLAGS)
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition bench_lemma42_ngon symmesh
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target bench_rotation_composition bench_lemma42_ngon bench_fem symmesh
 	bash bench/run_rotation_composition.sh $(BENCH_BUILD)/bench/bench_rotation_composition docs/benchmarks
 	bash bench/run_lemma42_ngon.sh $(BENCH_BUILD)/bench/bench_lemma42_ngon docs/benchmarks
 	/usr/bin/python3 bench/generate_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks

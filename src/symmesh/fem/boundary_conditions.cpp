@@ -1,6 +1,8 @@
 // Boundary conditions on AT's boundary facets (spec/fem.md#bc).
 #include "symmesh/fem/boundary_conditions.h"
 
+#include "symmesh/fem/p1_element.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -39,6 +41,19 @@ bool selects(const BoundarySelector& s, std::size_t instance, const InstanceInfo
   return true;
 }
 
+double simplex_volume(const mesh::Mesh& m, std::size_t c, int dim) {
+  const auto* v = m.cell(c);
+  if (dim == 2) {
+    std::array<std::array<double, 2>, 3> g{};
+    return barycentric_gradients<2>(
+        {m.vertex(std::size_t(v[0])), m.vertex(std::size_t(v[1])), m.vertex(std::size_t(v[2]))}, g);
+  }
+  std::array<std::array<double, 3>, 4> g{};
+  return barycentric_gradients<3>({m.vertex(std::size_t(v[0])), m.vertex(std::size_t(v[1])),
+                                   m.vertex(std::size_t(v[2])), m.vertex(std::size_t(v[3]))},
+                                  g);
+}
+
 double facet_measure(const std::array<std::array<double, 3>, 3>& x, int dim) {
   double u[3], w[3];
   for (int d = 0; d < 3; ++d) {
@@ -65,21 +80,26 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
       info.push_back({i, tm.region_ids[g],
                       &t.templated.transformations[std::size_t(tm.transformation_indices[g])]});
   }
+  // Per template: its boundary facets (template vertex ids).
+  std::vector<std::vector<std::array<GlobalIndex, 3>>> facets;
+  for (const auto& tm : t.templated.templates)
+    facets.push_back(template_boundary_facets(tm.mesh, dim));
   // Unknowns on two or more instances, then the facets all of whose vertices are such: an
   // interface facet is one of them that two instances have.
   std::vector<std::uint8_t> seen(a.unknowns, 0);
-  for (const auto& in : a.instances)
-    for (GlobalIndex g : in.boundary_global) {
+  std::vector<GlobalIndex> ids;
+  for (const auto& in : a.instances) {
+    in.boundary_ids(ids);
+    for (GlobalIndex g : ids) {
       auto& s = seen[std::size_t(g < 0 ? -1 - g : g)];
       if (s < 2) ++s;
     }
+  }
   std::map<std::array<GlobalIndex, 3>, int> shared_facets;
-  const auto facet_globals = [&](std::size_t k, const std::array<GlobalIndex, 3>& rows) {
+  const auto facet_globals = [&](std::size_t k, const std::array<GlobalIndex, 3>& vertices) {
     std::array<GlobalIndex, 3> g{-1, -1, -1};
-    for (int q = 0; q < dim; ++q) {
-      const GlobalIndex b = a.instances[k].boundary_global[std::size_t(rows[std::size_t(q)])];
-      g[std::size_t(q)] = b < 0 ? -1 - b : b;
-    }
+    for (int q = 0; q < dim; ++q)
+      g[std::size_t(q)] = a.global(k, std::size_t(vertices[std::size_t(q)]));
     std::sort(g.begin(), g.begin() + dim);
     return g;
   };
@@ -89,7 +109,7 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
     return true;
   };
   for (std::size_t k = 0; k < a.instances.size(); ++k)
-    for (const auto& f : a.templates[a.instances[k].template_index].boundary_facets) {
+    for (const auto& f : facets[a.instances[k].template_index]) {
       const auto g = facet_globals(k, f);
       if (all_shared(g)) ++shared_facets[g];
     }
@@ -97,14 +117,13 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
   const auto for_each_facet = [&](auto&& visit) {
     for (std::size_t k = 0; k < a.instances.size(); ++k) {
       const auto& tm = t.templated.templates[info[k].template_index].mesh;
-      const auto& matrix = a.templates[info[k].template_index];
-      for (const auto& f : matrix.boundary_facets) {
+      for (const auto& f : facets[info[k].template_index]) {
         const auto g = facet_globals(k, f);
         if (all_shared(g) && shared_facets[g] > 1) continue;
         std::array<std::array<double, 3>, 3> x{};
         std::array<GlobalIndex, 3> unknowns{-1, -1, -1};
         for (int q = 0; q < dim; ++q) {
-          const auto v = std::size_t(matrix.vertex_of[std::size_t(f[std::size_t(q)])]);
+          const auto v = std::size_t(f[std::size_t(q)]);
           info[k].transformation->apply(tm.vertex(v), x[std::size_t(q)].data());
           unknowns[std::size_t(q)] = a.global(k, v);
         }
@@ -153,13 +172,22 @@ std::vector<double> apply_boundary_conditions(TemplatedCsr& a,
     throw std::invalid_argument("dirichlet: no Dirichlet data; the pure Neumann problem is "
                                 "singular");
   s.dirichlet_unknowns = nodes.size();
-  // The source: F = source · ∫ φ_i (exact for a constant source).
-  if (bc.source != 0)
-    for (std::size_t k = 0; k < a.instances.size(); ++k) {
-      const auto& m = a.templates[a.instances[k].template_index];
-      for (std::size_t r = 0; r < m.vertices; ++r)
-        b[std::size_t(a.global(k, std::size_t(m.vertex_of[r])))] += bc.source * m.lumped_load[r];
+  // The source: F = source · ∫ φ_i, ∫ φ_i = Σ |T| / (D + 1) (exact for a constant source).
+  if (bc.source != 0) {
+    std::vector<std::vector<double>> load;
+    for (const auto& tm : t.templated.templates) {
+      std::vector<double> l(tm.mesh.vertex_count(), 0.0);
+      for (std::size_t c = 0; c < tm.mesh.cell_count(); ++c) {
+        const double share = simplex_volume(tm.mesh, c, dim) / (dim + 1);
+        for (int q = 0; q <= dim; ++q) l[std::size_t(tm.mesh.cell(c)[q])] += share;
+      }
+      load.push_back(std::move(l));
     }
+    for (std::size_t k = 0; k < a.instances.size(); ++k) {
+      const auto& l = load[a.instances[k].template_index];
+      for (std::size_t v = 0; v < l.size(); ++v) b[std::size_t(a.global(k, v))] += bc.source * l[v];
+    }
+  }
   a.set_dirichlet(nodes);
   u = value;
   std::vector<double> au(a.unknowns);

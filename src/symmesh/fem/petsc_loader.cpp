@@ -90,4 +90,14 @@ CgResult PetscSession::solve(const TemplatedCsr& a, const std::vector<double>& b
   return r;
 }
 
+double PetscSession::matvec_seconds(const TemplatedCsr& a, bool shell, int repeats) {
+  if (!started_) throw std::logic_error("PetscSession::matvec_seconds before start");
+  using Time = int (*)(const TemplatedCsr*, int, int, double*, std::string*);
+  double seconds = 0;
+  std::string error;
+  if (entry<Time>("symmesh_petsc_matvec_seconds")(&a, shell ? 1 : 0, repeats, &seconds, &error))
+    throw std::runtime_error("PETSc: " + error);
+  return seconds;
+}
+
 } // namespace symmesh::fem

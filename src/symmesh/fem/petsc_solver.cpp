@@ -55,7 +55,7 @@ void split(const TemplatedCsr& a, int rank, int size, Part& p) {
   p.rend = PetscInt(k1 == 0 ? 0 : end[k1 - 1]);
   if (k1 <= k0) p.rend = p.rstart;
   for (std::size_t k = k0; k < k1; ++k)
-    for (GlobalIndex g : a.instances[k].boundary_global) {
+    for (GlobalIndex g : a.instances[k].boundary_ids()) {
       const GlobalIndex u = g < 0 ? -1 - g : g;
       if (u < p.rstart || u >= p.rend) p.ghosts.push_back(u);
     }
@@ -64,7 +64,9 @@ void split(const TemplatedCsr& a, int rank, int size, Part& p) {
   for (std::size_t k = k0; k < k1; ++k) {
     InstanceMap in = a.instances[k];
     in.interior_first = local_id(p, in.interior_first);
-    for (auto& g : in.boundary_global) g = g < 0 ? -1 - local_id(p, -1 - g) : local_id(p, g);
+    auto ids = in.boundary_ids();
+    for (auto& g : ids) g = g < 0 ? -1 - local_id(p, -1 - g) : local_id(p, g);
+    in.set_boundary(ids);
     p.instances.push_back(std::move(in));
   }
   for (GlobalIndex d : a.dirichlet)
@@ -117,13 +119,15 @@ PetscErrorCode shell_diagonal(Mat m, Vec d) {
   PetscCall(VecGhostGetLocalForm(p->yg, &dl));
   PetscScalar* da = nullptr;
   PetscCall(VecGetArray(dl, &da));
+  std::vector<GlobalIndex> ids;
   for (const auto& in : p->instances) {
     const auto& t = p->a->templates[in.template_index];
     const auto& kd = p->template_diagonal[in.template_index];
+    in.boundary_ids(ids);
     for (std::size_t r = 0; r < t.vertices; ++r) {
       GlobalIndex g = in.interior_first + GlobalIndex(r) - GlobalIndex(t.boundary);
       if (r < t.boundary) {
-        g = in.boundary_global[r];
+        g = ids[r];
         if (g < 0) continue;
       }
       da[g] += in.coefficient * kd[r];
@@ -258,9 +262,58 @@ PetscErrorCode solve(const TemplatedCsr& a, const std::vector<double>& b, std::v
   PetscFunctionReturn(kOk);
 }
 
+/// Median seconds of one MatMult over `repeats` timed calls (after one warm-up), one rank.
+PetscErrorCode matvec_seconds(const TemplatedCsr& a, bool shell, int repeats, double& seconds) {
+  PetscFunctionBeginUser;
+  Part p;
+  split(a, 0, 1, p);
+  const PetscInt N = PetscInt(a.unknowns);
+  PetscCall(VecCreateGhost(PETSC_COMM_WORLD, N, N, 0, nullptr, &p.xg));
+  PetscCall(VecDuplicate(p.xg, &p.yg));
+  Vec x = nullptr, y = nullptr;
+  PetscCall(VecCreateMPI(PETSC_COMM_WORLD, N, N, &x));
+  PetscCall(VecDuplicate(x, &y));
+  PetscCall(VecSet(x, 1.0));
+  Mat m = nullptr;
+  if (shell) {
+    PetscCall(MatCreateShell(PETSC_COMM_WORLD, N, N, N, N, &p, &m));
+    PetscCall(MatShellSetOperation(m, MATOP_MULT, reinterpret_cast<void (*)(void)>(shell_mult)));
+  } else {
+    PetscCall(aij_matrix(a, p, &m));
+  }
+  PetscCall(MatMult(m, x, y));
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) {
+    const double t0 = MPI_Wtime();
+    PetscCall(MatMult(m, x, y));
+    t.push_back(MPI_Wtime() - t0);
+  }
+  std::sort(t.begin(), t.end());
+  seconds = t[t.size() / 2];
+  PetscCall(MatDestroy(&m));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&p.yg));
+  PetscCall(VecDestroy(&p.xg));
+  PetscFunctionReturn(kOk);
+}
+
 } // namespace
 
 extern "C" {
+
+/// For the FEM benchmark (bench/fem_bench.cpp): PETSc's MatMult time of the MATSHELL (shell != 0)
+/// or of the MATAIJ of Algorithm 7.1.
+__attribute__((visibility("default"))) int symmesh_petsc_matvec_seconds(const TemplatedCsr* a,
+                                                                        int shell, int repeats,
+                                                                        double* seconds,
+                                                                        std::string* error) {
+  if (matvec_seconds(*a, shell != 0, repeats, *seconds) != kOk) {
+    *error = "MatMult timing failed";
+    return 1;
+  }
+  return 0;
+}
 
 __attribute__((visibility("default"))) int symmesh_petsc_start(int* rank, int* size,
                                                                std::string* error) {

@@ -43,6 +43,9 @@ public:
   /// ‖r‖₂ ≤ rtol ‖b‖₂ on the unpreconditioned residual, as conjugate_gradients does.
   CgResult solve(const TemplatedCsr& a, const std::vector<double>& b, std::vector<double>& x,
                  const PetscSolveOptions& o);
+  /// The median seconds of one PETSc MatMult (MATSHELL of the TCSR, or MATAIJ of its CSR) over
+  /// `repeats` calls, on one rank (the FEM benchmark).
+  double matvec_seconds(const TemplatedCsr& a, bool shell, int repeats);
 
 private:
   bool started_ = false;

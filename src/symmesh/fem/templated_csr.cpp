@@ -35,6 +35,24 @@ std::array<std::array<GlobalIndex, 3>, D + 1> cell_facets(const mesh::Mesh& m, s
 }
 
 template <int D>
+std::vector<std::array<GlobalIndex, 3>> boundary_facets(const mesh::Mesh& m) {
+  std::vector<std::array<GlobalIndex, 3>> facets;
+  facets.reserve(m.cell_count() * (D + 1));
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    for (const auto& f : cell_facets<D>(m, c)) facets.push_back(f);
+  std::sort(facets.begin(), facets.end());
+  std::vector<std::array<GlobalIndex, 3>> boundary;
+  for (std::size_t k = 0; k < facets.size();) {
+    std::size_t e = k + 1;
+    while (e < facets.size() && facets[e] == facets[k]) ++e;
+    if (e - k > 2) throw std::invalid_argument("a facet lies in more than two cells");
+    if (e - k == 1) boundary.push_back(facets[k]);
+    k = e;
+  }
+  return boundary;
+}
+
+template <int D>
 TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index) {
   const auto expected = D == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
   for (std::size_t c = 0; c < m.cell_count(); ++c)
@@ -42,75 +60,90 @@ TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index) {
       throw std::invalid_argument("template " + std::to_string(index) + ", cell " +
                                   std::to_string(c) + ": P1 assembly needs " +
                                   (D == 2 ? "triangles" : "tetrahedra") + " only");
-  // Boundary facets: in exactly one cell.
-  std::vector<std::array<GlobalIndex, 3>> facets;
-  facets.reserve(m.cell_count() * (D + 1));
-  for (std::size_t c = 0; c < m.cell_count(); ++c)
-    for (const auto& f : cell_facets<D>(m, c)) facets.push_back(f);
-  std::sort(facets.begin(), facets.end());
   TemplateMatrix t;
   t.vertices = m.vertex_count();
   std::vector<char> on_boundary(t.vertices, 0);
-  std::vector<std::array<GlobalIndex, 3>> boundary_facets;
-  for (std::size_t k = 0; k < facets.size();) {
-    std::size_t e = k + 1;
-    while (e < facets.size() && facets[e] == facets[k]) ++e;
-    if (e - k > 2)
-      throw std::invalid_argument("template " + std::to_string(index) +
-                                  ": a facet lies in more than two cells");
-    if (e - k == 1) {
-      boundary_facets.push_back(facets[k]);
-      for (int q = 0; q < D; ++q) on_boundary[std::size_t(facets[k][std::size_t(q)])] = 1;
-    }
-    k = e;
+  try {
+    for (const auto& f : boundary_facets<D>(m))
+      for (int q = 0; q < D; ++q) on_boundary[std::size_t(f[std::size_t(q)])] = 1;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("template " + std::to_string(index) + ": " + e.what());
   }
   t.row_of.assign(t.vertices, -1);
+  GlobalIndex next = 0;
   for (int pass = 1; pass >= 0; --pass)
     for (std::size_t v = 0; v < t.vertices; ++v)
-      if (on_boundary[v] == pass) {
-        t.row_of[v] = GlobalIndex(t.vertex_of.size());
-        t.vertex_of.push_back(GlobalIndex(v));
-      }
+      if (on_boundary[v] == pass) t.row_of[v] = next++;
   t.boundary = std::size_t(std::count(on_boundary.begin(), on_boundary.end(), 1));
-  for (auto f : boundary_facets) {
-    for (int q = 0; q < D; ++q) f[std::size_t(q)] = t.row_of[std::size_t(f[std::size_t(q)])];
-    t.boundary_facets.push_back(f);
-  }
   const auto cell_rows = [&](std::size_t c) {
     std::array<GlobalIndex, 4> r{};
     for (int k = 0; k <= D; ++k) r[std::size_t(k)] = t.row_of[std::size_t(m.cell(c)[k])];
     return r;
   };
-  const auto coords = [&](std::size_t c) {
+  t.stiffness = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows, [&](std::size_t c) {
     std::array<const double*, D + 1> x{};
     for (int k = 0; k <= D; ++k) x[std::size_t(k)] = m.vertex(std::size_t(m.cell(c)[k]));
-    return x;
-  };
-  t.stiffness = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows,
-                                [&](std::size_t c) { return p1_stiffness<D>(coords(c)); });
-  t.interior_from.resize(t.vertices);
-  for (std::size_t r = 0; r < t.vertices; ++r) {
-    const auto* begin = t.stiffness.column.data() + t.stiffness.row_start[r];
-    const auto* end = t.stiffness.column.data() + t.stiffness.row_start[r + 1];
-    t.interior_from[r] =
-        std::lower_bound(begin, end, GlobalIndex(t.boundary)) - t.stiffness.column.data();
-  }
-  t.lumped_load.assign(t.vertices, 0.0);
-  for (std::size_t c = 0; c < m.cell_count(); ++c) {
-    std::array<std::array<double, D>, D + 1> g{};
-    const double volume = barycentric_gradients<D>(coords(c), g);
-    for (int k = 0; k <= D; ++k)
-      t.lumped_load[std::size_t(cell_rows(c)[std::size_t(k)])] += volume / (D + 1);
-  }
+    return p1_stiffness<D>(x);
+  });
   return t;
 }
 
 } // namespace
 
-std::size_t TemplateMatrix::bytes() const {
-  return stiffness.bytes() + (row_of.size() + vertex_of.size()) * sizeof(GlobalIndex) +
-         interior_from.size() * sizeof(std::int64_t) + lumped_load.size() * sizeof(double) +
-         boundary_facets.size() * sizeof(boundary_facets[0]);
+std::vector<GlobalIndex> TemplateMatrix::vertex_of() const {
+  std::vector<GlobalIndex> v(vertices);
+  for (std::size_t k = 0; k < vertices; ++k) v[std::size_t(row_of[k])] = GlobalIndex(k);
+  return v;
+}
+
+std::vector<std::array<GlobalIndex, 3>> template_boundary_facets(const mesh::Mesh& m, int dim) {
+  return dim == 2 ? boundary_facets<2>(m) : boundary_facets<3>(m);
+}
+
+void InstanceMap::set_boundary(const std::vector<GlobalIndex>& ids) {
+  boundary_rows = ids.size();
+  runs_.clear();
+  list_.clear();
+  for (std::size_t r = 0; r < ids.size();) {
+    Run run;
+    run.row = std::uint32_t(r);
+    run.first = ids[r];
+    run.length = 1;
+    if (r + 1 < ids.size() && (ids[r + 1] < 0) == (ids[r] < 0) &&
+        (ids[r + 1] - ids[r] == 1 || ids[r + 1] - ids[r] == -1))
+      run.delta = ids[r + 1] - ids[r];
+    while (r + run.length < ids.size() && (ids[r + run.length] < 0) == (ids[r] < 0) &&
+           ids[r + run.length] - ids[r + run.length - 1] == run.delta)
+      ++run.length;
+    r += run.length;
+    runs_.push_back(run);
+  }
+  if (runs_.size() * sizeof(Run) >= ids.size() * sizeof(GlobalIndex)) {
+    runs_.clear();
+    runs_.shrink_to_fit();
+    list_ = ids;
+  } else {
+    runs_.shrink_to_fit();
+  }
+}
+
+GlobalIndex InstanceMap::boundary(std::size_t r) const {
+  if (runs_.empty()) return list_[r];
+  const auto it = std::upper_bound(runs_.begin(), runs_.end(), r,
+                                   [](std::size_t row, const Run& q) { return row < q.row; });
+  const Run& q = *(it - 1);
+  return q.first + q.delta * GlobalIndex(r - q.row);
+}
+
+void InstanceMap::boundary_ids(std::vector<GlobalIndex>& out) const {
+  if (runs_.empty()) {
+    out = list_;
+    return;
+  }
+  out.resize(boundary_rows);
+  for (const Run& q : runs_)
+    for (std::uint32_t k = 0; k < q.length; ++k)
+      out[q.row + k] = q.first + q.delta * GlobalIndex(k);
 }
 
 GlobalIndex TemplatedCsr::global(std::size_t instance, std::size_t vertex) const {
@@ -118,46 +151,85 @@ GlobalIndex TemplatedCsr::global(std::size_t instance, std::size_t vertex) const
   const auto& t = templates[in.template_index];
   const auto r = std::size_t(t.row_of[vertex]);
   if (r >= t.boundary) return in.interior_first + GlobalIndex(r - t.boundary);
-  const GlobalIndex g = in.boundary_global[r];
+  const GlobalIndex g = in.boundary(r);
   return g < 0 ? -1 - g : g;
 }
+
+namespace {
+
+/// Instances of one template processed together (Algorithm 7.2 as a product of the template
+/// matrix with a block of instance vectors): each matrix entry is loaded once for the block, so
+/// the template's CSR arrays cost 1/kBlock of a load per product, and the instance values are
+/// gathered into a contiguous block (boundary rows by lookup, interior rows from their
+/// consecutive range).
+constexpr std::size_t kBlock = 8;
+
+void multiply_block(const TemplateMatrix& t, const InstanceMap* const* in, std::size_t lanes,
+                    const double* x, double* y, bool constrained, std::vector<double>& xb,
+                    std::vector<double>& yb, std::array<std::vector<GlobalIndex>, kBlock>& ids) {
+  const auto& k = t.stiffness;
+  const std::size_t nb = t.boundary, nv = t.vertices;
+  if (lanes < kBlock)
+    xb.assign(nv * kBlock, 0.0); // unused lanes: zeros, not garbage
+  else
+    xb.resize(nv * kBlock);
+  yb.resize(nv * kBlock);
+  for (std::size_t w = 0; w < lanes; ++w) {
+    const InstanceMap& m = *in[w];
+    in[w]->boundary_ids(ids[w]);
+    for (std::size_t r = 0; r < nb; ++r) {
+      const GlobalIndex g = ids[w][r];
+      xb[r * kBlock + w] = g >= 0 ? x[g] : constrained ? 0.0 : x[-1 - g];
+    }
+    const double* xi = x + m.interior_first;
+    for (std::size_t r = nb; r < nv; ++r) xb[r * kBlock + w] = xi[r - nb];
+  }
+  for (std::size_t r = 0; r < nv; ++r) {
+    double acc[kBlock] = {};
+    for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e) {
+      const double v = k.value[std::size_t(e)];
+      const double* col = &xb[std::size_t(k.column[std::size_t(e)]) * kBlock];
+      for (std::size_t w = 0; w < kBlock; ++w) acc[w] += v * col[w];
+    }
+    for (std::size_t w = 0; w < kBlock; ++w) yb[r * kBlock + w] = acc[w];
+  }
+  for (std::size_t w = 0; w < lanes; ++w) {
+    const InstanceMap& m = *in[w];
+    const double kappa = m.coefficient;
+    for (std::size_t r = 0; r < nb; ++r) {
+      const GlobalIndex g = ids[w][r];
+      if (g >= 0)
+        y[g] += kappa * yb[r * kBlock + w];
+      else if (!constrained)
+        y[-1 - g] += kappa * yb[r * kBlock + w];
+    }
+    double* yi = y + m.interior_first;
+    for (std::size_t r = nb; r < nv; ++r) yi[r - nb] = kappa * yb[r * kBlock + w]; // its alone
+  }
+}
+
+} // namespace
 
 void multiply_instances(const std::vector<TemplateMatrix>& templates,
                         const std::vector<InstanceMap>& instances, std::size_t unknowns,
                         const std::vector<GlobalIndex>& dirichlet, const double* x, double* y,
                         bool constrained) {
   std::fill(y, y + unknowns, 0.0);
-  std::vector<double> xb;
+  std::vector<double> xb, yb;
+  std::array<std::vector<GlobalIndex>, kBlock> ids;
+  std::vector<const InstanceMap*> block;
+  const auto flush = [&] {
+    if (block.empty()) return;
+    multiply_block(templates[block[0]->template_index], block.data(), block.size(), x, y,
+                   constrained, xb, yb, ids);
+    block.clear();
+  };
   for (const auto& in : instances) {
-    const auto& t = templates[in.template_index];
-    const auto& k = t.stiffness;
-    const std::size_t nb = t.boundary;
-    xb.resize(nb);
-    for (std::size_t r = 0; r < nb; ++r) {
-      const GlobalIndex g = in.boundary_global[r];
-      xb[r] = g >= 0 ? x[g] : constrained ? 0.0 : x[-1 - g];
-    }
-    // Interior column c (>= nb) is unknown interior_first + c - nb.
-    const double* xi = x + in.interior_first - GlobalIndex(nb);
-    const double kappa = in.coefficient;
-    for (std::size_t r = 0; r < t.vertices; ++r) {
-      double s = 0;
-      const std::int64_t mid = t.interior_from[r], end = k.row_start[r + 1];
-      for (std::int64_t e = k.row_start[r]; e < mid; ++e)
-        s += k.value[std::size_t(e)] * xb[std::size_t(k.column[std::size_t(e)])];
-      for (std::int64_t e = mid; e < end; ++e)
-        s += k.value[std::size_t(e)] * xi[k.column[std::size_t(e)]];
-      if (r >= nb) {
-        y[in.interior_first + GlobalIndex(r - nb)] = kappa * s; // this instance's alone
-      } else {
-        const GlobalIndex g = in.boundary_global[r];
-        if (g >= 0)
-          y[g] += kappa * s;
-        else if (!constrained)
-          y[-1 - g] += kappa * s;
-      }
-    }
+    if (!block.empty() && block[0]->template_index != in.template_index) flush();
+    block.push_back(&in);
+    if (block.size() == kBlock) flush();
   }
+  flush();
   if (constrained)
     for (GlobalIndex d : dirichlet) y[d] = x[d];
 }
@@ -168,15 +240,18 @@ void TemplatedCsr::multiply(const double* x, double* y, bool constrained) const 
 
 std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
   std::vector<double> d(unknowns, 0.0);
-  for (std::size_t i = 0; i < instances.size(); ++i) {
-    const auto& in = instances[i];
+  std::vector<GlobalIndex> ids;
+  for (const auto& in : instances) {
     const auto& t = templates[in.template_index];
     const auto& k = t.stiffness;
-    for (std::size_t r = 0; r < t.vertices; ++r)
+    in.boundary_ids(ids);
+    for (std::size_t r = 0; r < t.vertices; ++r) {
+      GlobalIndex g = r < t.boundary ? ids[r] : in.interior_first + GlobalIndex(r - t.boundary);
+      if (g < 0) g = -1 - g;
       for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e)
         if (std::size_t(k.column[std::size_t(e)]) == r)
-          d[std::size_t(global(i, std::size_t(t.vertex_of[r])))] +=
-              in.coefficient * k.value[std::size_t(e)];
+          d[std::size_t(g)] += in.coefficient * k.value[std::size_t(e)];
+    }
   }
   if (constrained)
     for (GlobalIndex g : dirichlet) d[std::size_t(g)] = 1.0;
@@ -186,11 +261,13 @@ std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
 CsrMatrix TemplatedCsr::to_csr(bool constrained) const {
   // Entries with duplicates (shared rows get one run per instance), then merged per row.
   std::vector<std::int64_t> count(unknowns + 1, 0);
+  std::vector<std::vector<GlobalIndex>> ids(instances.size());
+  for (std::size_t i = 0; i < instances.size(); ++i) instances[i].boundary_ids(ids[i]);
   const auto row_global = [&](std::size_t i, std::size_t r) {
     const auto& in = instances[i];
     const auto& t = templates[in.template_index];
     if (r >= t.boundary) return in.interior_first + GlobalIndex(r - t.boundary);
-    return in.boundary_global[r];
+    return ids[i][r];
   };
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const auto& t = templates[instances[i].template_index];
@@ -252,11 +329,15 @@ void TemplatedCsr::set_dirichlet(std::vector<GlobalIndex> nodes) {
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   dirichlet = std::move(nodes);
-  for (auto& in : instances)
-    for (auto& g : in.boundary_global) {
+  std::vector<GlobalIndex> ids;
+  for (auto& in : instances) {
+    in.boundary_ids(ids);
+    for (auto& g : ids) {
       const GlobalIndex u = g < 0 ? -1 - g : g;
       g = std::binary_search(dirichlet.begin(), dirichlet.end(), u) ? -1 - u : u;
     }
+    in.set_boundary(ids);
+  }
 }
 
 std::size_t TemplatedCsr::bytes() const {
@@ -273,18 +354,17 @@ bool TemplatedCsr::is_valid(std::ostream* why) const {
   };
   for (const auto& t : templates) {
     if (!t.stiffness.is_valid(why)) return false;
-    if (t.boundary > t.vertices || t.row_of.size() != t.vertices ||
-        t.vertex_of.size() != t.vertices || t.stiffness.rows != t.vertices)
+    if (t.boundary > t.vertices || t.row_of.size() != t.vertices || t.stiffness.rows != t.vertices)
       return fail("template sizes do not match");
   }
   for (const auto& in : instances) {
     if (in.template_index >= templates.size()) return fail("instance of a missing template");
     const auto& t = templates[in.template_index];
-    if (in.boundary_global.size() != t.boundary) return fail("boundary map size");
+    if (in.boundary_rows != t.boundary) return fail("boundary map size");
     if (in.interior_first < 0 ||
         std::size_t(in.interior_first) + (t.vertices - t.boundary) > unknowns)
       return fail("interior range out of bounds");
-    for (GlobalIndex g : in.boundary_global)
+    for (GlobalIndex g : in.boundary_ids())
       if ((g < 0 ? -1 - g : g) >= GlobalIndex(unknowns)) return fail("boundary id out of range");
   }
   return true;
@@ -339,12 +419,13 @@ TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
   for (std::size_t k = 0; k < a.instances.size(); ++k) {
     auto& in = a.instances[k];
     const auto& tm = a.templates[in.template_index];
-    in.boundary_global.resize(tm.boundary);
+    std::vector<GlobalIndex> ids(tm.boundary);
     for (std::size_t r = 0; r < tm.boundary; ++r) {
       auto& n = number[classes.find(slot_first[k] + r)];
       if (n < 0) n = GlobalIndex(next++);
-      in.boundary_global[r] = n;
+      ids[r] = n;
     }
+    in.set_boundary(ids);
     in.interior_first = GlobalIndex(next);
     next += tm.vertices - tm.boundary;
     if (next > std::size_t(std::numeric_limits<GlobalIndex>::max()))

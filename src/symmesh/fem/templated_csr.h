@@ -25,32 +25,55 @@
 namespace symmesh::fem {
 
 /// One template's matrix: rows [0, boundary) are its boundary vertices (in vertex order), rows
-/// [boundary, vertices) its interior vertices (in vertex order).
+/// [boundary, vertices) its interior vertices (in vertex order). Only what the product needs is
+/// kept (the boundary facets and loads are recomputed from the mesh where boundary conditions
+/// need them), so that a template costs about its share of the conventional matrix.
 struct TemplateMatrix {
   std::size_t vertices = 0, boundary = 0;
-  std::vector<GlobalIndex> row_of;         ///< template vertex -> row
-  std::vector<GlobalIndex> vertex_of;      ///< row -> template vertex
-  CsrMatrix stiffness;                     ///< rows and columns in row order, coefficient 1
-  std::vector<std::int64_t> interior_from; ///< per row: first entry whose column is interior
-  std::vector<double> lumped_load;         ///< per row: ∫ φ_row = Σ |T| / (D + 1)
-  /// The template's boundary facets (D row ids each; a triangle in 3D, an edge in 2D).
-  std::vector<std::array<GlobalIndex, 3>> boundary_facets;
+  std::vector<GlobalIndex> row_of; ///< template vertex -> row
+  CsrMatrix stiffness;             ///< rows and columns in row order, coefficient 1
 
-  std::size_t bytes() const;
+  /// row -> template vertex (the inverse of row_of).
+  std::vector<GlobalIndex> vertex_of() const;
+  std::size_t bytes() const { return stiffness.bytes() + row_of.size() * sizeof(GlobalIndex); }
 };
 
 /// One instance: its template, coefficient, the global id of its first interior row and the
-/// global ids of its boundary rows (−1 − g: g is a Dirichlet unknown).
+/// global ids of its boundary rows (−1 − g: g is a Dirichlet unknown). The boundary ids are kept
+/// as runs (rows r … r + n − 1 ↦ first + δ·(r' − r), δ = ±1) when that is smaller than the list:
+/// an instance numbers its new boundary unknowns consecutively along its template's line meshes,
+/// so a slice of an n-gon needs a handful of runs, not one id per boundary vertex.
 struct InstanceMap {
+  struct Run {
+    std::uint32_t row = 0, length = 0;
+    GlobalIndex first = 0;
+    std::int32_t delta = 1;
+  };
   std::uint32_t template_index = 0;
   double coefficient = 1;
   GlobalIndex interior_first = 0;
-  std::vector<GlobalIndex> boundary_global;
+  std::size_t boundary_rows = 0;
 
-  std::size_t bytes() const {
-    return sizeof(std::uint32_t) + sizeof(double) + sizeof(GlobalIndex) +
-           boundary_global.size() * sizeof(GlobalIndex);
+  /// Stores the boundary ids (one per boundary row) as runs or as a list, whichever is smaller.
+  void set_boundary(const std::vector<GlobalIndex>& ids);
+  /// Boundary id of row r (encoded: negative for Dirichlet). \pre r < boundary_rows
+  GlobalIndex boundary(std::size_t r) const;
+  /// All boundary ids, expanded, into `out` (resized).
+  void boundary_ids(std::vector<GlobalIndex>& out) const;
+  std::vector<GlobalIndex> boundary_ids() const {
+    std::vector<GlobalIndex> out;
+    boundary_ids(out);
+    return out;
   }
+  std::size_t bytes() const {
+    return sizeof(std::uint32_t) + sizeof(double) + sizeof(GlobalIndex) + sizeof(std::size_t) +
+           list_.size() * sizeof(GlobalIndex) + runs_.size() * sizeof(Run);
+  }
+  bool uses_runs() const { return !runs_.empty(); }
+
+private:
+  std::vector<GlobalIndex> list_;
+  std::vector<Run> runs_;
 };
 
 struct TemplatedCsr {
@@ -64,7 +87,7 @@ struct TemplatedCsr {
   GlobalIndex global(std::size_t instance, std::size_t vertex) const;
   bool is_dirichlet_row(std::size_t instance, std::size_t row) const {
     const auto& in = instances[instance];
-    return row < in.boundary_global.size() && in.boundary_global[row] < 0;
+    return row < in.boundary_rows && in.boundary(row) < 0;
   }
   /// Algorithm 7.2: y = A x over the instances (constrained: the Dirichlet rows and columns are
   /// the identity). \pre x, y have `unknowns` entries
@@ -79,6 +102,10 @@ struct TemplatedCsr {
   std::size_t bytes() const;
   bool is_valid(std::ostream* why = nullptr) const;
 };
+
+/// The boundary facets of a simplex mesh (facets in exactly one cell; D vertex ids each, sorted,
+/// the third id −1 in 2D). Throws std::invalid_argument for a facet in more than two cells.
+std::vector<std::array<GlobalIndex, 3>> template_boundary_facets(const mesh::Mesh& m, int dim);
 
 /// Algorithm 7.2 over any list of instances in any index space of `unknowns` entries (the whole
 /// system, or one MPI rank's owned and ghost unknowns): y = Σ κ_i P_iᵀ K_t P_i x, and with
