@@ -784,6 +784,22 @@ bool triangulation_of_vertices_exists(const Plc<D>& p) {
   };
   Exact target = 0;
   for (const auto& c : dom.cells()) target += volume(dom.coords(c));
+  // s ⊆ us(P): s respects P iff it respects the lower-dimensional elements (the argument of
+  // core::mesh_respects_plc)
+  std::vector<core::ElementComplex<Exact, D>> lower;
+  for (VertexId v : p.vertices) {
+    core::ElementComplex<Exact, D> k;
+    k.points = p.carrier.points;
+    k.elements = {Simplex{v}};
+    lower.push_back(k);
+  }
+  for (std::size_t c = 0; c < p.cells.size(); ++c)
+    if (p.cells[c].dimension < D) lower.push_back(p.cell_complex(c));
+  auto respects_lower_dimensional = [&](const PointSet<D>& s) {
+    for (const auto& k : lower)
+      if (!core::respects_plc_element<Exact, D>(s, k)) return false;
+    return true;
+  };
   std::vector<PointSet<D>> cand;
   std::vector<Exact> vol;
   const int n = int(verts.size());
@@ -793,7 +809,7 @@ bool triangulation_of_vertices_exists(const Plc<D>& p) {
     PointSet<D> s;
     for (int i : idx) s.push_back(verts[std::size_t(i)]);
     if (core::affinely_independent<Exact, D>(s) && core::cell_covered_by<Exact, D>(s, dom) &&
-        core::respects_plc<Exact, D>(s, p)) {
+        respects_lower_dimensional(s)) {
       cand.push_back(s);
       vol.push_back(volume(s));
     }

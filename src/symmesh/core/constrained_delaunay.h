@@ -18,20 +18,60 @@
 #include "symmesh/core/multi_region_geometry.h"
 #include "symmesh/core/visibility.h"
 
+#include <array>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 namespace symmesh::core {
 
-/// M respects P (Def 2.9): every element of M respects every element of P. Checked on the cells:
-/// a face f of a cell E has f ∩ p = f ∩ (E ∩ p), an intersection of faces of E, so it respects p
-/// when E does.
+/// M respects P (Def 2.9): every element of M respects every element of P.
+/// Two reductions, both exact:
+///  - checked on the cells: a face f of a cell E has f ∩ p = f ∩ (E ∩ p), an intersection of
+///    faces of E, so it respects p when E does;
+///  - an element p of P whose carrier pieces are all elements of M (as point tuples) is respected
+///    by every element E of the conforming M: E ∩ p = ⋃ (E ∩ g) over the pieces g, and each
+///    E ∩ g is a common face of E and g in M. Only the other elements are tested geometrically;
+///  - the D-cells need no test once us(M) ⊆ us(P) and M respects the lower-dimensional
+///    elements: then int E meets no element of dimension < D (E ∩ q would contain an interior
+///    point of E, so E ⊆ q), hence, as the D-cells' boundaries are covered by (D-1)-cells
+///    (Def 2.3 iii), the connected int E lies inside one D-cell p, so E ∩ p = E, and for every
+///    other D-cell p', E ∩ p' ⊆ p ∩ p', a union of lower-dimensional elements q (Def 2.3 iv), so
+///    E ∩ p' = ⋃ (E ∩ q) is a union of faces of E.
+/// \pre M is conforming (is_mesh) and us(M) ⊆ us(P) (checked by the callers through
+/// geometry_conforms before this)
 template <class FT, int D>
 bool mesh_respects_plc(const ElementComplex<FT, D>& m, const Plc<FT, D>& p) {
+  std::map<Point<FT, D>, VertexId, PointLess<FT, D>> index;
+  for (VertexId v = 0; v < m.points.size(); ++v) index.emplace(m.points[v], v);
+  auto in_mesh = [&](const Simplex& s) { // s over P's carrier points is an element of M
+    std::array<VertexId, 4> ids{};
+    for (int i = 0; i < s.n; ++i) {
+      const auto it = index.find(p.carrier.points[s.v[i]]);
+      if (it == index.end()) return false;
+      ids[i] = it->second;
+    }
+    return m.contains(Simplex::from_range(ids.data(), ids.data() + s.n));
+  };
+  std::vector<ElementComplex<FT, D>> others;
+  for (VertexId v : p.vertices)
+    if (!in_mesh(Simplex{v})) {
+      ElementComplex<FT, D> vertex;
+      vertex.points = p.carrier.points;
+      vertex.elements = {Simplex{v}};
+      others.push_back(vertex);
+    }
+  for (std::size_t c = 0; c < p.cells.size(); ++c) {
+    if (p.cells[c].dimension == D) continue;
+    bool all = true;
+    for (const auto& s : p.cells[c].pieces) all = all && in_mesh(s);
+    if (!all) others.push_back(p.cell_complex(c));
+  }
   for (const auto& c : m.cells())
-    if (!respects_plc<FT, D>(m.coords(c), p)) return false;
+    for (const auto& k : others)
+      if (!respects_plc_element<FT, D>(m.coords(c), k)) return false;
   return true;
 }
 
@@ -69,12 +109,12 @@ bool is_triangulation_of(const ElementComplex<FT, D>& m, const Plc<FT, D>& p,
     if (why) *why << "vertices(M) != vertices(P)";
     return false;
   }
-  if (!mesh_respects_plc(m, p)) {
-    if (why) *why << "M does not respect P";
-    return false;
-  }
   if (!geometry_conforms(m, p.domain())) {
     if (why) *why << "us(M) != us(P)";
+    return false;
+  }
+  if (!mesh_respects_plc(m, p)) {
+    if (why) *why << "M does not respect P";
     return false;
   }
   return true;
@@ -94,10 +134,10 @@ public:
       throw std::invalid_argument("ConstrainedDelaunay: P is not a multi-region PLC: " + why.str());
     if (!is_mesh(m, &why) || m.cell_dimension() != D)
       throw std::invalid_argument("ConstrainedDelaunay: M is no D-dimensional mesh " + why.str());
-    if (!mesh_respects_plc(m, p))
-      throw std::invalid_argument("ConstrainedDelaunay: M does not respect P");
     if (!geometry_conforms(m, p.domain()))
       throw std::invalid_argument("ConstrainedDelaunay: M does not geometry-conform to P");
+    if (!mesh_respects_plc(m, p))
+      throw std::invalid_argument("ConstrainedDelaunay: M does not respect P");
     for (const auto& x : p.vertex_points()) plc_vertices_.insert(x);
     blockers_ = visibility_blockers(p);
     for (const auto& f : p.cells_of_dimension(D - 1)) plc_facets_.push_back(p.cell_complex(f));
@@ -194,25 +234,23 @@ template <class FT, int D>
 bool is_constrained_delaunay_triangulation(const MultiRegionMesh<FT, D>& m, const Plc<FT, D>& p,
                                            std::ostream* why = nullptr) {
   if (!m.is_valid(why)) return false;
-  if (m.mesh.cell_dimension() != D) {
-    if (why) *why << "DIM_cell(M) != " << D;
-    return false;
-  }
   if (!same_vertices(m.mesh, p)) {
     if (why) *why << "vertices(M) != vertices(P)";
     return false;
   }
-  if (!mesh_respects_plc(m.mesh, p)) {
-    if (why) *why << "M does not respect P";
+  std::optional<ConstrainedDelaunay<FT, D>> cd;
+  try { // checks: P multi-region, M a D-mesh that respects P and has us(M) = us(P)
+    cd.emplace(p, m.mesh);
+  } catch (const std::invalid_argument& e) {
+    if (why) *why << e.what();
     return false;
   }
   if (!geometry_conforms(m, p.geometry())) {
-    if (why) *why << "(M, xi) does not geometry-conform to (P, xi~)";
+    if (why) *why << "(M, xi) does not geometry-conform to (P, xi~) region by region";
     return false;
   }
-  const ConstrainedDelaunay<FT, D> cd(p, m.mesh);
   for (const auto& c : m.mesh.cells())
-    if (!cd.is_constrained_delaunay(c)) {
+    if (!cd->is_constrained_delaunay(c)) {
       if (why) *why << "a cell is not constrained Delaunay";
       return false;
     }
