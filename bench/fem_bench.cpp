@@ -1,14 +1,16 @@
 // The FEM benchmark of Section 7.6 (issue 17, docs/benchmarks/fem.md; driver bench/fem.py).
 //
-// bench_fem EXAMPLE SIZE REPEATS CG_RTOL: generates the built-in templated geometry EXAMPLE
-// (an n-gon slice or an n-TSV) at SIZE with `--method auto`'s method, assembles the TCSR (every
-// template's stiffness once) and the CSR of Algorithm 7.1 (the conventional matrix), and prints
-// one JSON line: unknowns, bytes of the conventional mesh (MRMESH of AT) and of the templated
-// mesh (Listing 4.1; with Listing 4.2's SVB; with the compact SVB), bytes of CSR and TCSR, and
-// the median seconds of one matrix-vector product — own CSR, own TCSR (Algorithm 7.2), PETSc
-// MATAIJ, PETSc MATSHELL of the TCSR — timed side by side, REPEATS rounds interleaved (each
+// bench_fem EXAMPLE SIZE REPEATS CG_RTOL [--tcsr-only]: generates the built-in templated geometry
+// EXAMPLE (an n-gon slice or an n-TSV) at SIZE with `--method auto`'s method, assembles the TCSR
+// (every template's stiffness once) and the CSR of Algorithm 7.1 (the conventional matrix), and
+// prints one JSON line: unknowns, bytes of the conventional mesh (MRMESH of AT) and of the
+// templated mesh (Listing 4.1; with Listing 4.2's SVB; with the compact SVB), bytes of CSR and
+// TCSR, and the median seconds of one matrix-vector product — own CSR, own TCSR (Algorithm 7.2),
+// PETSc MATAIJ, PETSc MATSHELL of the TCSR — timed side by side, REPEATS rounds interleaved (each
 // round times each of them once, in turn); and the seconds of CG with Jacobi to CG_RTOL on the
 // TCSR and on the CSR (0: skipped). All with the whole boundary Dirichlet and source 1.
+// --tcsr-only (a structure instance too large for the CSR): no CSR, no PETSc; the TCSR product
+// and 50 CG iterations on it are timed, and the peak RSS is reported.
 #include "symmesh/fem/boundary_conditions.h"
 #include "symmesh/fem/conjugate_gradient.h"
 #include "symmesh/fem/petsc_solver.h"
@@ -27,6 +29,8 @@
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 using namespace symmesh;
 using Clock = std::chrono::steady_clock;
@@ -63,10 +67,11 @@ mesh::TemplatedMeshCompactSvb generate(const io::AnyStructure& x, double size, s
 } // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::cerr << "usage: bench_fem EXAMPLE SIZE REPEATS CG_RTOL\n";
+  if (argc != 5 && argc != 6) {
+    std::cerr << "usage: bench_fem EXAMPLE SIZE REPEATS CG_RTOL [--tcsr-only]\n";
     return 2;
   }
+  const bool tcsr_only = argc == 6 && std::string(argv[5]) == "--tcsr-only";
   const std::string example = argv[1];
   const double size = std::stod(argv[2]);
   const int repeats = std::stoi(argv[3]);
@@ -82,8 +87,8 @@ int main(int argc, char** argv) {
   j["size"] = size;
   auto t0 = Clock::now();
   std::string method;
-  const auto t = generate(io::parse_templated_structure(io::example_document(example).dump()),
-                          size, method);
+  const auto t =
+      generate(io::parse_templated_structure(io::example_document(example).dump()), size, method);
   j["method"] = method;
   j["seconds_generate"] = since(t0);
   const mesh::StructureInstance at(t);
@@ -105,13 +110,36 @@ int main(int argc, char** argv) {
   std::vector<double> u0;
   const auto b = fem::apply_boundary_conditions(a, t, bc, u0);
   j["seconds_assemble_tcsr"] = since(t0);
+  j["unknowns"] = a.unknowns;
+  j["bytes_tcsr"] = a.bytes();
+  if (tcsr_only) {
+    std::vector<double> x(a.unknowns, 1.0), y(a.unknowns);
+    std::vector<double> times;
+    for (int r = 0; r < repeats; ++r) {
+      const auto s = Clock::now();
+      a.multiply(x.data(), y.data());
+      times.push_back(since(s));
+    }
+    j["matvec_seconds"] = {{"tcsr", median(times)}};
+    fem::CgOptions o;
+    o.rtol = 1e-300;
+    o.max_iterations = 50;
+    auto u = u0;
+    const auto s = Clock::now();
+    fem::conjugate_gradients([&](const double* p, double* q) { a.multiply(p, q); }, a.diagonal(), b,
+                             u, o);
+    j["cg_50_iterations_seconds"] = since(s);
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    j["peak_rss_bytes"] = ru.ru_maxrss * 1024L;
+    std::cout << j.dump() << std::endl;
+    return 0;
+  }
   t0 = Clock::now();
   const auto csr = a.to_csr();
   j["seconds_algorithm_7_1"] = since(t0);
-  j["unknowns"] = a.unknowns;
   j["nonzeros"] = csr.nonzeros();
   j["bytes_csr"] = csr.bytes();
-  j["bytes_tcsr"] = a.bytes();
   std::vector<double> x(a.unknowns, 1.0), y(a.unknowns);
   csr.multiply(x.data(), y.data()); // warm-up
   a.multiply(x.data(), y.data());
@@ -132,8 +160,11 @@ int main(int argc, char** argv) {
                          {"tcsr", median(own_tcsr)},
                          {"petsc_aij", median(petsc_aij)},
                          {"petsc_shell", median(petsc_shell)}};
-  j["matvec_all"] = {{"csr", own_csr}, {"tcsr", own_tcsr}, {"petsc_aij", petsc_aij},
-                     {"petsc_shell", petsc_shell}};
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  j["peak_rss_bytes"] = ru.ru_maxrss * 1024L;
+  j["matvec_all"] = {
+      {"csr", own_csr}, {"tcsr", own_tcsr}, {"petsc_aij", petsc_aij}, {"petsc_shell", petsc_shell}};
   if (cg_rtol > 0) {
     fem::CgOptions o;
     o.rtol = cg_rtol;

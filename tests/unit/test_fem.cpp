@@ -75,7 +75,7 @@ void check_tcsr(const mesh::TemplatedMeshCompactSvb& t) {
   ASSERT_TRUE(direct.is_valid(&why)) << why.str();
   expect_same_csr(a.to_csr(false), direct);
   fem::BoundaryConditions bc;
-  bc.dirichlet.push_back({{"dirichlet[0].on", {}, {}, {}, {}}, 1.0});
+  bc.dirichlet.push_back({{"dirichlet[0].on", {}, {}, {}, {}, {}}, 1.0});
   std::vector<double> u;
   fem::apply_boundary_conditions(a, t, bc, u);
   const auto constrained = fem::constrain(direct, a.dirichlet);
@@ -185,7 +185,7 @@ TEST(Fem, TcsrAndCsrConjugateGradientsAgree) {
   auto a = fem::assemble_templated_csr(t, region_coefficient);
   fem::BoundaryConditions bc;
   bc.source = 1;
-  bc.dirichlet.push_back({{"d", {}, {}, {}, {}}, 0.5});
+  bc.dirichlet.push_back({{"d", {}, {}, {}, {}, {}}, 0.5});
   std::vector<double> u1, u2;
   const auto b = fem::apply_boundary_conditions(a, t, bc, u1);
   u2 = u1;
@@ -212,8 +212,8 @@ void check_piecewise_linear(const mesh::TemplatedMeshCompactSvb& t, int dim) {
   const auto kappa = [](mesh::RegionIdType r) { return r == 2 ? 4.0 : 1.0; };
   auto a = fem::assemble_templated_csr(t, kappa);
   fem::BoundaryConditions bc;
-  fem::BoundarySelector left{"dirichlet[0].on", {}, {}, {}, {}},
-      right{"neumann[0].on", {}, {}, {}, {}};
+  fem::BoundarySelector left{"dirichlet[0].on", {}, {}, {}, {}, {}},
+      right{"neumann[0].on", {}, {}, {}, {}, {}};
   left.box = std::array<std::array<double, 3>, 2>{{{-1e-9, -9, -9}, {1e-9, 9, 9}}};
   right.box = std::array<std::array<double, 3>, 2>{{{2 - 1e-9, -9, -9}, {2 + 1e-9, 9, 9}}};
   bc.dirichlet.push_back({left, 0.0});
@@ -264,7 +264,7 @@ TEST(Fem, ManufacturedSolutionConvergesAtTheP1Rate) {
     const auto t = example("ngon-slice-8", h);
     auto a = fem::assemble_templated_csr(t, [](mesh::RegionIdType) { return 1.0; });
     fem::BoundaryConditions bc;
-    bc.dirichlet.push_back({{"d", {}, {}, {}, {}}, 0.0});
+    bc.dirichlet.push_back({{"d", {}, {}, {}, {}, {}}, 0.0});
     std::vector<double> u;
     fem::apply_boundary_conditions(a, t, bc, u); // marks the Dirichlet unknowns
     std::vector<double> coords(a.unknowns * 2), weight(a.unknowns, 0.0), b(a.unknowns, 0.0);
@@ -323,7 +323,7 @@ TEST(Fem, BadBoundaryConditionsAreRefused) {
   fem::BoundaryConditions none;
   EXPECT_THROW(fem::apply_boundary_conditions(a, t, none, u), std::invalid_argument);
   fem::BoundaryConditions empty_box;
-  fem::BoundarySelector s{"dirichlet[0].on", {}, {}, {}, {}};
+  fem::BoundarySelector s{"dirichlet[0].on", {}, {}, {}, {}, {}};
   s.box = std::array<std::array<double, 3>, 2>{{{50, 50, 50}, {60, 60, 60}}};
   empty_box.dirichlet.push_back({s, 0.0});
   try {
