@@ -71,20 +71,64 @@ TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index) {
   }
   t.row_of.assign(t.vertices, -1);
   GlobalIndex next = 0;
-  for (int pass = 1; pass >= 0; --pass)
-    for (std::size_t v = 0; v < t.vertices; ++v)
-      if (on_boundary[v] == pass) t.row_of[v] = next++;
-  t.boundary = std::size_t(std::count(on_boundary.begin(), on_boundary.end(), 1));
+  for (std::size_t v = 0; v < t.vertices; ++v)
+    if (on_boundary[v]) t.row_of[v] = next++;
+  t.boundary = std::size_t(next);
   const auto cell_rows = [&](std::size_t c) {
     std::array<GlobalIndex, 4> r{};
     for (int k = 0; k <= D; ++k) r[std::size_t(k)] = t.row_of[std::size_t(m.cell(c)[k])];
     return r;
   };
-  t.stiffness = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows, [&](std::size_t c) {
+  const auto element = [&](std::size_t c) {
     std::array<const double*, D + 1> x{};
     for (int k = 0; k <= D; ++k) x[std::size_t(k)] = m.vertex(std::size_t(m.cell(c)[k]));
     return p1_stiffness<D>(x);
-  });
+  };
+  // Interior rows in breadth-first order from the boundary rows (Cuthill–McKee from the whole
+  // boundary): neighbouring rows get near row numbers, so the product's accesses to the block of
+  // instance values stay within a few layers of rows however large the template is. The
+  // pattern comes from the vertex adjacency of the cells (boundary rows numbered, interior rows
+  // by vertex id for the moment).
+  std::vector<GlobalIndex> provisional = t.row_of;
+  for (std::size_t v = 0; v < t.vertices; ++v)
+    if (provisional[v] < 0) provisional[v] = next++;
+  std::vector<GlobalIndex> vertex_of_provisional(t.vertices);
+  for (std::size_t v = 0; v < t.vertices; ++v)
+    vertex_of_provisional[std::size_t(provisional[v])] = GlobalIndex(v);
+  const auto pattern = assemble_csr<D>(
+      t.vertices, m.cell_count(),
+      [&](std::size_t c) {
+        std::array<GlobalIndex, 4> r{};
+        for (int k = 0; k <= D; ++k) r[std::size_t(k)] = provisional[std::size_t(m.cell(c)[k])];
+        return r;
+      },
+      [](std::size_t) { return ElementMatrix<D>{}; });
+  next = GlobalIndex(t.boundary);
+  std::vector<GlobalIndex> queue(t.boundary);
+  for (std::size_t r = 0; r < t.boundary; ++r) queue[r] = GlobalIndex(r);
+  std::vector<char> seen(t.vertices, 0);
+  for (std::size_t r = 0; r < t.boundary; ++r) seen[r] = 1;
+  const auto visit_from = [&](std::size_t head) {
+    for (; head < queue.size(); ++head) {
+      const auto r = std::size_t(queue[head]);
+      for (auto e = pattern.row_start[r]; e < pattern.row_start[r + 1]; ++e) {
+        const auto q = std::size_t(pattern.column[std::size_t(e)]);
+        if (seen[q]) continue;
+        seen[q] = 1;
+        queue.push_back(GlobalIndex(q));
+        t.row_of[std::size_t(vertex_of_provisional[q])] = next++;
+      }
+    }
+  };
+  visit_from(0);
+  for (std::size_t r = t.boundary; r < t.vertices; ++r) // parts without boundary (none in a mesh
+    if (!seen[r]) {                                     // template, which is bounded)
+      seen[r] = 1;
+      queue.push_back(GlobalIndex(r));
+      t.row_of[std::size_t(vertex_of_provisional[r])] = next++;
+      visit_from(queue.size() - 1);
+    }
+  t.stiffness = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows, element);
   return t;
 }
 
@@ -173,17 +217,28 @@ void multiply_block(const TemplateMatrix& t, const InstanceMap* const* in, std::
     xb.assign(nv * kBlock, 0.0); // unused lanes: zeros, not garbage
   else
     xb.resize(nv * kBlock);
-  yb.resize(nv * kBlock);
+  // Row by row, lane by lane: the block is written once, front to back, while the lanes' x
+  // values are read as kBlock sequential streams (a lane-major loop would sweep the whole block
+  // kBlock times).
+  const double* xi[kBlock] = {};
   for (std::size_t w = 0; w < lanes; ++w) {
-    const InstanceMap& m = *in[w];
     in[w]->boundary_ids(ids[w]);
-    for (std::size_t r = 0; r < nb; ++r) {
+    xi[w] = x + in[w]->interior_first - GlobalIndex(nb);
+  }
+  for (std::size_t r = 0; r < nb; ++r)
+    for (std::size_t w = 0; w < lanes; ++w) {
       const GlobalIndex g = ids[w][r];
       xb[r * kBlock + w] = g >= 0 ? x[g] : constrained ? 0.0 : x[-1 - g];
     }
-    const double* xi = x + m.interior_first;
-    for (std::size_t r = nb; r < nv; ++r) xb[r * kBlock + w] = xi[r - nb];
+  for (std::size_t r = nb; r < nv; ++r)
+    for (std::size_t w = 0; w < lanes; ++w) xb[r * kBlock + w] = xi[w][r];
+  double kappa[kBlock] = {};
+  double* yi[kBlock] = {};
+  for (std::size_t w = 0; w < lanes; ++w) {
+    kappa[w] = in[w]->coefficient;
+    yi[w] = y + in[w]->interior_first - GlobalIndex(nb);
   }
+  yb.resize(nb * kBlock);
   for (std::size_t r = 0; r < nv; ++r) {
     double acc[kBlock] = {};
     for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e) {
@@ -191,21 +246,20 @@ void multiply_block(const TemplateMatrix& t, const InstanceMap* const* in, std::
       const double* col = &xb[std::size_t(k.column[std::size_t(e)]) * kBlock];
       for (std::size_t w = 0; w < kBlock; ++w) acc[w] += v * col[w];
     }
-    for (std::size_t w = 0; w < kBlock; ++w) yb[r * kBlock + w] = acc[w];
+    if (r < nb) {
+      for (std::size_t w = 0; w < kBlock; ++w) yb[r * kBlock + w] = acc[w];
+    } else { // interior rows: this instance's alone
+      for (std::size_t w = 0; w < lanes; ++w) yi[w][r] = kappa[w] * acc[w];
+    }
   }
-  for (std::size_t w = 0; w < lanes; ++w) {
-    const InstanceMap& m = *in[w];
-    const double kappa = m.coefficient;
-    for (std::size_t r = 0; r < nb; ++r) {
+  for (std::size_t r = 0; r < nb; ++r)
+    for (std::size_t w = 0; w < lanes; ++w) {
       const GlobalIndex g = ids[w][r];
       if (g >= 0)
-        y[g] += kappa * yb[r * kBlock + w];
+        y[g] += kappa[w] * yb[r * kBlock + w];
       else if (!constrained)
-        y[-1 - g] += kappa * yb[r * kBlock + w];
+        y[-1 - g] += kappa[w] * yb[r * kBlock + w];
     }
-    double* yi = y + m.interior_first;
-    for (std::size_t r = nb; r < nv; ++r) yi[r - nb] = kappa * yb[r * kBlock + w]; // its alone
-  }
 }
 
 } // namespace
