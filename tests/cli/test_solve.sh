@@ -57,7 +57,20 @@ EOF
   ); then pass "$ref agrees with: $(echo $msg)"; else fail "$ref: $msg"; fi
 }
 
-solve ng_tcsr "$TMP/ns8.tmesh" "$TMP/bc2.json" tcsr 1 --coefficient 1=3
+solve ng_tcsr "$TMP/ns8.tmesh" "$TMP/bc2.json" tcsr 1 --coefficient 1=3 --templated "$TMP/u.tmesh"
+# The solution per template: every instance's values over its template's vertices, the same
+# numbers as the .vtu's point data.
+$PY - "$TMP/u.tmesh" "$TMP/ng_tcsr.vtu" <<'EOF' && pass "--templated writes u per instance" || fail "--templated output"
+import json, sys, meshio, numpy as np
+t = json.load(open(sys.argv[1]))
+u = meshio.read(sys.argv[2]).point_data["u"]
+values = []
+for tp in t["templates"]:
+    for inst in tp["instances"]:
+        assert len(inst["point_data"]["u"]) == len(tp["vertices"])
+        values += inst["point_data"]["u"]
+assert set(np.round(values, 15)) == set(np.round(u, 15)), "values differ"
+EOF
 solve ng_csr "$TMP/ns8.tmesh" "$TMP/bc2.json" csr 1 --coefficient 1=3
 solve ng_petsc "$TMP/ns8.tmesh" "$TMP/bc2.json" petsc 1 --coefficient 1=3
 solve ng_aij "$TMP/ns8.tmesh" "$TMP/bc2.json" petsc-aij 1 --coefficient 1=3

@@ -1,11 +1,13 @@
 // symmesh solve MESH.tmesh --bc BC.json [--coefficient REGION=VALUE ...] [--ksp-rtol R]
-//                [--solver tcsr|csr|petsc|petsc-aij] -o SOLUTION.vtu [--report R.json] [--quiet]
+//                [--solver tcsr|csr|petsc|petsc-aij] -o SOLUTION.vtu [--templated U.tmesh]
+//                [--report R.json] [--quiet]
 //
 // P1 FEM on a templated mesh (spec/fem.md): the stiffness matrix assembled once per template
 // (TCSR), boundary conditions on the structure instance's boundary, conjugate gradients with
 // Jacobi preconditioning on the TCSR operator (Algorithm 7.2), on the CSR matrix of Algorithm 7.1,
 // or in PETSc (the TCSR operator as a MATSHELL, or the CSR as MATAIJ). The solution is written as
-// point data "u" of the structure instance.
+// point data "u" of the structure instance, and on request per template (each instance's values
+// over its template's vertices) in a .tmesh.
 #include "symmesh/apps/commands.h"
 #include "symmesh/fem/boundary_conditions.h"
 #include "symmesh/fem/conjugate_gradient.h"
@@ -35,7 +37,7 @@ namespace symmesh::apps {
 namespace {
 
 struct SolveOptions {
-  std::string mesh, bc, out, report, solver = "tcsr";
+  std::string mesh, bc, out, report, templated, solver = "tcsr";
   std::vector<std::string> coefficients;
   double rtol = 1e-12;
   std::size_t max_iterations = 100000;
@@ -193,6 +195,17 @@ int run_solve(const SolveOptions& o) {
   w.point_data.push_back({"u", &point_u});
   w.progress = progress.get();
   io::write_mesh_file(at, o.out, w);
+  if (!o.templated.empty()) {
+    // Per template: each instance's values over its template's vertices.
+    std::vector<std::vector<double>> per_instance;
+    for (std::size_t k = 0; k < a.instances.size(); ++k) {
+      const auto& tm = t.templated.templates[a.instances[k].template_index].mesh;
+      std::vector<double> values(tm.vertex_count());
+      for (std::size_t v = 0; v < values.size(); ++v) values[v] = u[std::size_t(a.global(k, v))];
+      per_instance.push_back(std::move(values));
+    }
+    io::write_tmesh(t, o.templated, {{"u", std::move(per_instance)}});
+  }
   double umin = HUGE_VAL, umax = -HUGE_VAL;
   for (double v : u) {
     umin = std::min(umin, v);
@@ -257,6 +270,9 @@ void add_solve(CLI::App& app, int& exit_code) {
                   "matrix as MATAIJ)")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out, "solution: .vtu with point data u")->required();
+  cmd->add_option("--templated", o->templated,
+                  "also write the templated mesh with the solution per instance over its "
+                  "template's vertices (.tmesh, \"point_data\": {\"u\": …})");
   cmd->add_option("--report", o->report, "JSON report: unknowns, iterations, bytes, seconds");
   cmd->add_flag("--quiet", o->quiet, "no progress lines on stderr");
   cmd->callback([o, &exit_code] { exit_code = run_solve(*o); });

@@ -43,14 +43,7 @@ using support::Symmetry;
 template <class FT>
 using P3 = core::Point<FT, 3>;
 
-template <class FT>
-P3<FT> cross(const P3<FT>& a, const P3<FT>& b) {
-  P3<FT> c;
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-  return c;
-}
+using symmetric::cross; // the exact cross product (gen/symmetric_surface_mesh.h)
 
 /// The k-th of the n + 1 points of the uniform line mesh of [a, b], exactly: the value of
 /// core::line_mesh_point, written as one product so that its interval enclosure, which rounded()

@@ -47,8 +47,10 @@ mesh::IndexType index(const J& j, const std::string& path, std::size_t bound) {
 }
 } // namespace
 
-void write_tmesh(const mesh::TemplatedMeshCompactSvb& t, const std::string& path) {
+void write_tmesh(const mesh::TemplatedMeshCompactSvb& t, const std::string& path,
+                 const InstancePointData& point_data) {
   const auto& tm = t.templated;
+  std::size_t instance = 0;
   J doc;
   doc["symmesh"] = "templated-mesh/1";
   doc["dimension"] = tm.point_dimension;
@@ -66,9 +68,19 @@ void write_tmesh(const mesh::TemplatedMeshCompactSvb& t, const std::string& path
         cell.push_back(tp.mesh.cell(c)[k]);
       cells.push_back(cell);
     }
-    for (std::size_t g = 0; g < tp.instance_count(); ++g)
-      instances.push_back(
-          J{{"transformation", tp.transformation_indices[g]}, {"region", tp.region_ids[g]}});
+    for (std::size_t g = 0; g < tp.instance_count(); ++g, ++instance) {
+      J in{{"transformation", tp.transformation_indices[g]}, {"region", tp.region_ids[g]}};
+      if (!point_data.empty()) {
+        J data = J::object();
+        for (const auto& [name, values] : point_data) {
+          if (instance >= values.size() || values[instance].size() != tp.mesh.vertex_count())
+            throw std::logic_error("write_tmesh: point data '" + name + "' has the wrong size");
+          data[name] = values[instance];
+        }
+        in["point_data"] = data;
+      }
+      instances.push_back(in);
+    }
     templates.push_back(J{{"vertices", vertices}, {"cells", cells}, {"instances", instances}});
   }
   doc["templates"] = templates;

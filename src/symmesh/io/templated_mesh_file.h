@@ -8,11 +8,18 @@
 #include "symmesh/mesh/templated_mesh.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace symmesh::io {
 
-/// Writes atomically (path + ".part", then rename).
-void write_tmesh(const mesh::TemplatedMeshCompactSvb& t, const std::string& path);
+/// Optional point data per instance, over its template's vertices: (name, values[global instance]
+/// [template vertex]) — e.g. the solution of `symmesh solve --templated`.
+using InstancePointData = std::vector<std::pair<std::string, std::vector<std::vector<double>>>>;
+
+/// Writes atomically (path + ".part", then rename); each instance gets "point_data" when given.
+void write_tmesh(const mesh::TemplatedMeshCompactSvb& t, const std::string& path,
+                 const InstancePointData& point_data = {});
 /// Throws io::InputError (templated_structure_json.h) naming the field for malformed files.
 mesh::TemplatedMeshCompactSvb read_tmesh(const std::string& path);
 
