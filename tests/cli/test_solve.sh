@@ -78,6 +78,11 @@ solve ng_mpi "$TMP/ns8.tmesh" "$TMP/bc2.json" petsc 2 --coefficient 1=3
 same ng_tcsr ng_csr ng_petsc ng_aij ng_mpi
 $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['ranks'] == 2 and r['iterations'] > 0, r" \
   "$TMP/ng_mpi.json" && pass "the 2-rank report says 2 ranks" || fail "2-rank report"
+# A reaction term (the templates' mass matrices): TCSR, CSR and PETSc on 2 ranks agree.
+solve rx_tcsr "$TMP/ns8.tmesh" "$TMP/bc2.json" tcsr 1 --reaction 1=2
+solve rx_csr "$TMP/ns8.tmesh" "$TMP/bc2.json" csr 1 --reaction 1=2
+solve rx_mpi "$TMP/ns8.tmesh" "$TMP/bc2.json" petsc 2 --reaction 1=2
+same rx_tcsr rx_csr rx_mpi
 solve tsv_tcsr "$TMP/tsv8.tmesh" "$TMP/bc3.json" tcsr 1 --coefficient 1=2
 solve tsv_petsc "$TMP/tsv8.tmesh" "$TMP/bc3.json" petsc 1 --coefficient 1=2
 solve tsv_mpi "$TMP/tsv8.tmesh" "$TMP/bc3.json" petsc 2 --coefficient 1=2
@@ -104,6 +109,7 @@ echo '{"symmesh": "boundary-conditions/1", "dirichlet": [{"on": {}, "value": NaN
 bad "malformed JSON" "malformed JSON" "$TMP/ns8.tmesh" --bc "$TMP/b4.json"
 bad "a coefficient of a region no instance has" "no instance has region 7" "$TMP/ns8.tmesh" --bc "$TMP/bc2.json" --coefficient 7=1
 bad "a non-positive coefficient" "must be a positive" "$TMP/ns8.tmesh" --bc "$TMP/bc2.json" --coefficient 1=-2
+bad "a negative reaction" "--reaction 1=-1: must be a finite number >= 0" "$TMP/ns8.tmesh" --bc "$TMP/bc2.json" --reaction 1=-1
 bad "an unknown solver" "--solver magic" "$TMP/ns8.tmesh" --bc "$TMP/bc2.json" --solver magic
 bad "a missing mesh" "cannot open" "$TMP/none.tmesh" --bc "$TMP/bc2.json"
 expect_exit 2 "a solution file that is not .vtu" -- "$BIN" solve "$TMP/ns8.tmesh" --bc "$TMP/bc2.json" -o "$TMP/u.msh"

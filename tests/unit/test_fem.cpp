@@ -50,6 +50,10 @@ mesh::TemplatedMeshCompactSvb example(const std::string& name, double size) {
 double region_coefficient(mesh::RegionIdType r) {
   return 1.0 + 0.5 * double(r % 4);
 }
+/// A reaction term σ on the odd regions (the mass matrices are then assembled too).
+double region_reaction(mesh::RegionIdType r) {
+  return r % 2 ? 0.75 : 0.0;
+}
 
 /// Same pattern; every value within `tolerance` of its row's largest magnitude.
 void expect_same_csr(const fem::CsrMatrix& a, const fem::CsrMatrix& b, double tolerance) {
@@ -80,10 +84,11 @@ void expect_same_csr(const fem::CsrMatrix& a, const fem::CsrMatrix& b, double to
 /// differ by the coordinates' rounding amplified by the element's shape (see
 /// spec/fem.md#tcsr for the measured values).
 void check_tcsr(const mesh::TemplatedMeshCompactSvb& t, double tolerance = 1e-14) {
-  auto a = fem::assemble_templated_csr(t, region_coefficient);
+  auto a = fem::assemble_templated_csr(t, region_coefficient, region_reaction);
   std::ostringstream why;
   ASSERT_TRUE(a.is_valid(&why)) << why.str();
-  const auto direct = fem::assemble_structure_instance_csr(t, region_coefficient, a);
+  const auto direct =
+      fem::assemble_structure_instance_csr(t, region_coefficient, region_reaction, a);
   ASSERT_TRUE(direct.is_valid(&why)) << why.str();
   expect_same_csr(a.to_csr(false), direct, tolerance);
   fem::BoundaryConditions bc;
@@ -291,6 +296,31 @@ TEST(Fem, PiecewiseLinearSolutionsAreExactIn2DAnd3D) {
                                                                "/data/translated_boxes_3d.json"),
                                   0.3),
                          3);
+}
+
+/// −Δu + σu = σ with u = 1 on the boundary: u ≡ 1, which P1 with the consistent mass matrix and
+/// the exact load σ∫φ_i reproduces (rows of M sum to ∫φ_i), in 2D and 3D.
+TEST(Fem, ReactionTermReproducesConstants) {
+  for (const auto& [name, size] : {std::pair{"ngon-slice-8", 0.1}, {"tsv-8", 0.4}}) {
+    const auto t = example(name, size);
+    auto a = fem::assemble_templated_csr(
+        t, [](mesh::RegionIdType) { return 2.0; }, [](mesh::RegionIdType) { return 3.0; });
+    EXPECT_FALSE(a.templates[0].mass.empty());
+    fem::BoundaryConditions bc;
+    bc.source = 3.0;
+    bc.dirichlet.push_back({{"d", {}, {}, {}, {}, {}}, 1.0});
+    std::vector<double> u;
+    const auto b = fem::apply_boundary_conditions(a, t, bc, u);
+    fem::CgOptions o;
+    o.rtol = 1e-14;
+    fem::conjugate_gradients([&](const double* x, double* y) { a.multiply(x, y); }, a.diagonal(), b,
+                             u, o);
+    for (double v : u) ASSERT_NEAR(v, 1.0, 1e-10) << name;
+  }
+  EXPECT_THROW(fem::assemble_templated_csr(
+                   example("ngon-slice-8", 0.2), [](mesh::RegionIdType) { return 1.0; },
+                   [](mesh::RegionIdType) { return -1.0; }),
+               std::invalid_argument);
 }
 
 TEST(Fem, ManufacturedSolutionConvergesAtTheP1Rate) {

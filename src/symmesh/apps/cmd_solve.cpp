@@ -38,17 +38,19 @@ namespace {
 
 struct SolveOptions {
   std::string mesh, bc, out, report, templated, solver = "tcsr";
-  std::vector<std::string> coefficients;
+  std::vector<std::string> coefficients, reactions;
   double rtol = 1e-12;
   std::size_t max_iterations = 100000;
   bool quiet = false;
 };
 
-std::map<mesh::RegionIdType, double> parse_coefficients(const std::vector<std::string>& list) {
+std::map<mesh::RegionIdType, double> parse_coefficients(const std::vector<std::string>& list,
+                                                        const std::string& option = "--coefficient",
+                                                        bool zero_allowed = false) {
   std::map<mesh::RegionIdType, double> c;
   for (const auto& item : list) {
     const auto eq = item.find('=');
-    const std::string where = "--coefficient " + item;
+    const std::string where = option + " " + item;
     if (eq == std::string::npos) throw std::invalid_argument(where + ": expected REGION=VALUE");
     std::size_t used = 0;
     long region = -1;
@@ -64,8 +66,10 @@ std::map<mesh::RegionIdType, double> parse_coefficients(const std::vector<std::s
     }
     if (region < 0 || region > 65535)
       throw std::invalid_argument(where + ": the region must be in [0, 65535]");
-    if (!(value > 0) || !std::isfinite(value))
-      throw std::invalid_argument(where + ": the coefficient must be a positive finite number");
+    if (!(zero_allowed ? value >= 0 : value > 0) || !std::isfinite(value))
+      throw std::invalid_argument(where + (zero_allowed ? ": must be a finite number >= 0"
+                                                        : ": the coefficient must be a positive "
+                                                          "finite number"));
     c[mesh::RegionIdType(region)] = value;
   }
   return c;
@@ -117,6 +121,7 @@ int run_solve(const SolveOptions& o) {
   std::size_t csr_bytes = 0;
   try {
     const auto coefficients = parse_coefficients(o.coefficients);
+    const auto reactions = parse_coefficients(o.reactions, "--reaction", true);
     const auto bc = io::read_boundary_conditions(o.bc);
     if (progress) progress->stage("reading " + o.mesh, 0, "");
     t = io::read_tmesh(o.mesh);
@@ -124,19 +129,25 @@ int run_solve(const SolveOptions& o) {
       const auto it = coefficients.find(r);
       return it == coefficients.end() ? 1.0 : it->second;
     };
-    for (const auto& [region, value] : coefficients) {
-      bool used = false;
-      for (const auto& tm : t.templated.templates)
-        for (auto r : tm.region_ids) used = used || r == region;
-      if (!used)
-        throw std::invalid_argument("--coefficient " + std::to_string(region) + "=" +
-                                    std::to_string(value) + ": no instance has region " +
-                                    std::to_string(region));
-    }
+    for (const auto* given : {&coefficients, &reactions})
+      for (const auto& [region, value] : *given) {
+        bool used = false;
+        for (const auto& tm : t.templated.templates)
+          for (auto r : tm.region_ids) used = used || r == region;
+        if (!used)
+          throw std::invalid_argument(
+              std::string(given == &coefficients ? "--coefficient " : "--reaction ") +
+              std::to_string(region) + "=" + std::to_string(value) + ": no instance has region " +
+              std::to_string(region));
+      }
+    const auto reaction = [&](mesh::RegionIdType r) {
+      const auto it = reactions.find(r);
+      return it == reactions.end() ? 0.0 : it->second;
+    };
     const auto t0 = std::chrono::steady_clock::now();
     if (progress)
       progress->stage("assembly per template", t.templated.templates.size(), "templates");
-    a = fem::assemble_templated_csr(t, coefficient);
+    a = fem::assemble_templated_csr(t, coefficient, reaction);
     b = fem::apply_boundary_conditions(a, t, bc, u, &summary);
     assembly_seconds = seconds_since(t0);
     const auto t1 = std::chrono::steady_clock::now();
@@ -250,15 +261,20 @@ int run_solve(const SolveOptions& o) {
 void add_solve(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<SolveOptions>();
   auto* cmd = app.add_subcommand(
-      "solve", "Solve -div(k grad u) = f with P1 finite elements on a templated mesh (.tmesh): the "
-               "stiffness matrix is assembled once per template (TCSR, Listing 7.1) and CG with "
-               "Jacobi preconditioning runs on the templated operator (Algorithm 7.2). Exit 0: "
-               "written; 1: CG did not converge (nothing written); 2: bad input.");
+      "solve",
+      "Solve -div(k grad u) + s u = f with P1 finite elements on a templated mesh (.tmesh): the "
+      "stiffness matrix is assembled once per template (TCSR, Listing 7.1) and CG with "
+      "Jacobi preconditioning runs on the templated operator (Algorithm 7.2). Exit 0: "
+      "written; 1: CG did not converge (nothing written); 2: bad input.");
   cmd->add_option("mesh", o->mesh, "templated mesh (.tmesh, from generate --templated)")
       ->required();
   cmd->add_option("--bc", o->bc, "boundary conditions (JSON, spec/fem.md#bc-file)")->required();
   cmd->add_option("--coefficient", o->coefficients,
                   "REGION=VALUE: the coefficient k of a region (default 1); repeatable");
+  cmd->add_option(
+      "--reaction", o->reactions,
+      "REGION=VALUE: a reaction coefficient s >= 0 of a region, -div(k grad u) + s u = f "
+      "(default 0; the templates' mass matrices are then assembled too); repeatable");
   cmd->add_option("--ksp-rtol", o->rtol, "relative residual tolerance ||r|| <= rtol ||b||")
       ->capture_default_str();
   cmd->add_option("--max-iterations", o->max_iterations, "CG iteration limit")

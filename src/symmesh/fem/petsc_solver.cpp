@@ -26,7 +26,7 @@ struct Part {
   std::vector<PetscInt> ghosts;       ///< sorted global ids
   std::vector<InstanceMap> instances; ///< boundary ids and interior_first in local ids
   std::vector<GlobalIndex> dirichlet; ///< owned Dirichlet unknowns, local ids
-  std::vector<std::vector<double>> template_diagonal;
+  std::vector<std::vector<double>> template_diagonal, template_mass_diagonal;
   Vec xg = nullptr, yg = nullptr; ///< ghosted work vectors
   std::size_t local_size() const { return std::size_t(rend - rstart) + ghosts.size(); }
 };
@@ -72,12 +72,15 @@ void split(const TemplatedCsr& a, int rank, int size, Part& p) {
   for (GlobalIndex d : a.dirichlet)
     if (d >= p.rstart && d < p.rend) p.dirichlet.push_back(d - GlobalIndex(p.rstart));
   for (const auto& t : a.templates) {
-    std::vector<double> d(t.vertices, 0.0);
+    std::vector<double> d(t.vertices, 0.0), dm(t.vertices, 0.0);
     for (std::size_t r = 0; r < t.vertices; ++r)
       for (auto e = t.stiffness.row_start[r]; e < t.stiffness.row_start[r + 1]; ++e)
-        if (std::size_t(t.stiffness.column[std::size_t(e)]) == r)
+        if (std::size_t(t.stiffness.column[std::size_t(e)]) == r) {
           d[r] = t.stiffness.value[std::size_t(e)];
+          if (!t.mass.empty()) dm[r] = t.mass[std::size_t(e)];
+        }
     p.template_diagonal.push_back(std::move(d));
+    p.template_mass_diagonal.push_back(std::move(dm));
   }
 }
 
@@ -130,7 +133,8 @@ PetscErrorCode shell_diagonal(Mat m, Vec d) {
         g = ids[r];
         if (g < 0) continue;
       }
-      da[g] += in.coefficient * kd[r];
+      da[g] +=
+          in.coefficient * kd[r] + in.reaction * p->template_mass_diagonal[in.template_index][r];
     }
   }
   for (GlobalIndex g : p->dirichlet) da[g] = 0; // set to 1 after the ghosts are added

@@ -53,7 +53,7 @@ std::vector<std::array<GlobalIndex, 3>> boundary_facets(const mesh::Mesh& m) {
 }
 
 template <int D>
-TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index) {
+TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index, bool with_mass) {
   const auto expected = D == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
   for (std::size_t c = 0; c < m.cell_count(); ++c)
     if (m.cell_types[c] != expected)
@@ -129,6 +129,12 @@ TemplateMatrix template_matrix(const mesh::Mesh& m, std::size_t index) {
       visit_from(queue.size() - 1);
     }
   t.stiffness = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows, element);
+  if (with_mass) // the same cells give the same pattern
+    t.mass = assemble_csr<D>(t.vertices, m.cell_count(), cell_rows, [&](std::size_t c) {
+               std::array<const double*, D + 1> x{};
+               for (int k = 0; k <= D; ++k) x[std::size_t(k)] = m.vertex(std::size_t(m.cell(c)[k]));
+               return p1_mass<D>(x);
+             }).value;
   return t;
 }
 
@@ -232,33 +238,42 @@ void multiply_block(const TemplateMatrix& t, const InstanceMap* const* in, std::
     }
   for (std::size_t r = nb; r < nv; ++r)
     for (std::size_t w = 0; w < lanes; ++w) xb[r * kBlock + w] = xi[w][r];
-  double kappa[kBlock] = {};
+  double kappa[kBlock] = {}, sigma[kBlock] = {};
   double* yi[kBlock] = {};
   for (std::size_t w = 0; w < lanes; ++w) {
     kappa[w] = in[w]->coefficient;
+    sigma[w] = in[w]->reaction;
     yi[w] = y + in[w]->interior_first - GlobalIndex(nb);
   }
   yb.resize(nb * kBlock);
+  const bool mass = !t.mass.empty();
   for (std::size_t r = 0; r < nv; ++r) {
-    double acc[kBlock] = {};
+    double acc[kBlock] = {}, accm[kBlock] = {};
     for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e) {
       const double v = k.value[std::size_t(e)];
       const double* col = &xb[std::size_t(k.column[std::size_t(e)]) * kBlock];
       for (std::size_t w = 0; w < kBlock; ++w) acc[w] += v * col[w];
     }
+    if (mass) // the reaction term σ M_t, on the same pattern
+      for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e) {
+        const double v = t.mass[std::size_t(e)];
+        const double* col = &xb[std::size_t(k.column[std::size_t(e)]) * kBlock];
+        for (std::size_t w = 0; w < kBlock; ++w) accm[w] += v * col[w];
+      }
     if (r < nb) {
-      for (std::size_t w = 0; w < kBlock; ++w) yb[r * kBlock + w] = acc[w];
+      for (std::size_t w = 0; w < kBlock; ++w)
+        yb[r * kBlock + w] = kappa[w] * acc[w] + sigma[w] * accm[w];
     } else { // interior rows: this instance's alone
-      for (std::size_t w = 0; w < lanes; ++w) yi[w][r] = kappa[w] * acc[w];
+      for (std::size_t w = 0; w < lanes; ++w) yi[w][r] = kappa[w] * acc[w] + sigma[w] * accm[w];
     }
   }
   for (std::size_t r = 0; r < nb; ++r)
     for (std::size_t w = 0; w < lanes; ++w) {
       const GlobalIndex g = ids[w][r];
       if (g >= 0)
-        y[g] += kappa[w] * yb[r * kBlock + w];
+        y[g] += yb[r * kBlock + w];
       else if (!constrained)
-        y[-1 - g] += kappa[w] * yb[r * kBlock + w];
+        y[-1 - g] += yb[r * kBlock + w];
     }
 }
 
@@ -304,7 +319,8 @@ std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
       if (g < 0) g = -1 - g;
       for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e)
         if (std::size_t(k.column[std::size_t(e)]) == r)
-          d[std::size_t(g)] += in.coefficient * k.value[std::size_t(e)];
+          d[std::size_t(g)] += in.coefficient * k.value[std::size_t(e)] +
+                               (t.mass.empty() ? 0.0 : in.reaction * t.mass[std::size_t(e)]);
     }
   }
   if (constrained)
@@ -346,7 +362,8 @@ CsrMatrix TemplatedCsr::to_csr(bool constrained) const {
         GlobalIndex c = row_global(i, std::size_t(k.column[std::size_t(e)]));
         const bool dirichlet_column = c < 0;
         if (c < 0) c = -1 - c;
-        double v = in.coefficient * k.value[std::size_t(e)];
+        double v = in.coefficient * k.value[std::size_t(e)] +
+                   (t.mass.empty() ? 0.0 : in.reaction * t.mass[std::size_t(e)]);
         if (constrained && (dirichlet_row || dirichlet_column)) v = 0; // identity added below
         entries[std::size_t(fill[std::size_t(g)]++)] = {c, v};
       }
@@ -425,16 +442,29 @@ bool TemplatedCsr::is_valid(std::ostream* why) const {
 }
 
 TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
-                                    const std::function<double(mesh::RegionIdType)>& coefficient) {
+                                    const std::function<double(mesh::RegionIdType)>& coefficient,
+                                    const std::function<double(mesh::RegionIdType)>& reaction) {
   std::ostringstream why;
   if (!t.is_valid(&why)) throw std::invalid_argument("templated mesh: " + why.str());
   TemplatedCsr a;
   a.dimension = t.templated.point_dimension;
   if (a.dimension != 2 && a.dimension != 3)
     throw std::invalid_argument("P1 assembly needs a 2D or 3D templated mesh");
-  for (std::size_t i = 0; i < t.templated.templates.size(); ++i)
-    a.templates.push_back(a.dimension == 2 ? template_matrix<2>(t.templated.templates[i].mesh, i)
-                                           : template_matrix<3>(t.templated.templates[i].mesh, i));
+  bool with_mass = false;
+  if (reaction)
+    for (const auto& tm : t.templated.templates)
+      for (auto r : tm.region_ids) {
+        const double sigma = reaction(r);
+        if (!(sigma >= 0) || !std::isfinite(sigma))
+          throw std::invalid_argument("the reaction coefficient of region " + std::to_string(r) +
+                                      " must be a finite number >= 0");
+        with_mass = with_mass || sigma > 0;
+      }
+  for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
+    const auto& m = t.templated.templates[i].mesh;
+    a.templates.push_back(a.dimension == 2 ? template_matrix<2>(m, i, with_mass)
+                                           : template_matrix<3>(m, i, with_mass));
+  }
   // Instances in global (template-major) order; union-find over their boundary rows.
   std::vector<std::size_t> slot_first{0};
   for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
@@ -443,6 +473,7 @@ TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
       InstanceMap in;
       in.template_index = std::uint32_t(i);
       in.coefficient = coefficient(tm.region_ids[g]);
+      in.reaction = with_mass ? reaction(tm.region_ids[g]) : 0.0;
       if (!(in.coefficient > 0) || !std::isfinite(in.coefficient))
         throw std::invalid_argument("the coefficient of region " +
                                     std::to_string(tm.region_ids[g]) +
@@ -492,6 +523,7 @@ TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
 CsrMatrix
 assemble_structure_instance_csr(const mesh::TemplatedMeshCompactSvb& t,
                                 const std::function<double(mesh::RegionIdType)>& coefficient,
+                                const std::function<double(mesh::RegionIdType)>& reaction,
                                 const TemplatedCsr& numbering) {
   const mesh::StructureInstance at(t);
   const int dim = at.dimension();
@@ -510,13 +542,14 @@ assemble_structure_instance_csr(const mesh::TemplatedMeshCompactSvb& t,
     ++next;
   });
   std::vector<std::array<GlobalIndex, 4>> cells;
-  std::vector<double> kappa;
+  std::vector<double> kappa, sigma;
   at.for_each_cell([&](const mesh::StructureInstance::Instance& in, std::size_t,
                        const std::array<IndexType, 4>& v) {
     std::array<GlobalIndex, 4> c{};
     for (int k = 0; k <= dim; ++k) c[std::size_t(k)] = unknown_of[std::size_t(v[std::size_t(k)])];
     cells.push_back(c);
     kappa.push_back(coefficient(in.region));
+    sigma.push_back(reaction ? reaction(in.region) : 0.0);
   });
   const auto cell = [&](std::size_t c) { return cells[c]; };
   if (dim == 2)
@@ -524,16 +557,18 @@ assemble_structure_instance_csr(const mesh::TemplatedMeshCompactSvb& t,
       std::array<const double*, 3> p{};
       for (int k = 0; k < 3; ++k) p[std::size_t(k)] = &x[std::size_t(cells[c][std::size_t(k)]) * 2];
       auto e = p1_stiffness<2>(p);
-      for (auto& row : e)
-        for (auto& v : row) v *= kappa[c];
+      const auto m = p1_mass<2>(p);
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) e[i][j] = kappa[c] * e[i][j] + sigma[c] * m[i][j];
       return e;
     });
   return assemble_csr<3>(numbering.unknowns, cells.size(), cell, [&](std::size_t c) {
     std::array<const double*, 4> p{};
     for (int k = 0; k < 4; ++k) p[std::size_t(k)] = &x[std::size_t(cells[c][std::size_t(k)]) * 3];
     auto e = p1_stiffness<3>(p);
-    for (auto& row : e)
-      for (auto& v : row) v *= kappa[c];
+    const auto m = p1_mass<3>(p);
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = 0; j < 4; ++j) e[i][j] = kappa[c] * e[i][j] + sigma[c] * m[i][j];
     return e;
   });
 }

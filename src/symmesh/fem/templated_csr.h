@@ -32,10 +32,14 @@ struct TemplateMatrix {
   std::size_t vertices = 0, boundary = 0;
   std::vector<GlobalIndex> row_of; ///< template vertex -> row
   CsrMatrix stiffness;             ///< rows and columns in row order, coefficient 1
+  /// The P1 mass matrix's values on the stiffness pattern (empty: no reaction term anywhere).
+  std::vector<double> mass;
 
   /// row -> template vertex (the inverse of row_of).
   std::vector<GlobalIndex> vertex_of() const;
-  std::size_t bytes() const { return stiffness.bytes() + row_of.size() * sizeof(GlobalIndex); }
+  std::size_t bytes() const {
+    return stiffness.bytes() + mass.size() * sizeof(double) + row_of.size() * sizeof(GlobalIndex);
+  }
 };
 
 /// One instance: its template, coefficient, the global id of its first interior row and the
@@ -50,7 +54,8 @@ struct InstanceMap {
     std::int32_t delta = 1;
   };
   std::uint32_t template_index = 0;
-  double coefficient = 1;
+  double coefficient = 1; ///< κ of its region: the instance adds κ K_t + σ M_t
+  double reaction = 0;    ///< σ of its region (0 unless a reaction term is given)
   GlobalIndex interior_first = 0;
   std::size_t boundary_rows = 0;
 
@@ -66,7 +71,7 @@ struct InstanceMap {
     return out;
   }
   std::size_t bytes() const {
-    return sizeof(std::uint32_t) + sizeof(double) + sizeof(GlobalIndex) + sizeof(std::size_t) +
+    return sizeof(std::uint32_t) + 2 * sizeof(double) + sizeof(GlobalIndex) + sizeof(std::size_t) +
            list_.size() * sizeof(GlobalIndex) + runs_.size() * sizeof(Run);
   }
   bool uses_runs() const { return !runs_.empty(); }
@@ -120,10 +125,14 @@ void multiply_instances(const std::vector<TemplateMatrix>& templates,
 /// stiffness once, the global numbering from the compact SVB (union-find over the instances'
 /// boundary rows; each instance's interior rows numbered consecutively after its new boundary
 /// unknowns), each instance's coefficient coefficient(region).
-/// \pre t.is_valid(); every coefficient positive and finite (else std::invalid_argument naming
-/// the region)
-TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
-                                    const std::function<double(mesh::RegionIdType)>& coefficient);
+/// With `reaction` (σ per region, −div(κ∇u) + σu = f), every template's P1 mass matrix is
+/// assembled too, on the same pattern.
+/// \pre t.is_valid(); every coefficient positive and finite, every reaction ≥ 0 and finite (else
+/// std::invalid_argument naming the region)
+TemplatedCsr
+assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
+                       const std::function<double(mesh::RegionIdType)>& coefficient,
+                       const std::function<double(mesh::RegionIdType)>& reaction = nullptr);
 
 /// The CSR matrix assembled directly on the structure instance (every cell of AT from its own
 /// transformed coordinates, times its region's coefficient), numbered like `numbering` (the
@@ -131,6 +140,7 @@ TemplatedCsr assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
 CsrMatrix
 assemble_structure_instance_csr(const mesh::TemplatedMeshCompactSvb& t,
                                 const std::function<double(mesh::RegionIdType)>& coefficient,
+                                const std::function<double(mesh::RegionIdType)>& reaction,
                                 const TemplatedCsr& numbering);
 
 /// Replaces rows and columns of the sorted Dirichlet unknowns by the identity.
