@@ -50,6 +50,17 @@ for method in auto conventional; do
   run "$bin" generate "$out/tsv-16.json" --size 0.08 --method "$method" -o "$out/tsv-16.$method.vtu" \
     --templated "$out/tsv-16.$method.tmesh" --report "$out/tsv-16.$method.report.json" --quiet || exit 1
 done
+# FEM on the templated TSV (spec/fem.md): P1 stiffness per template (TCSR), u = 0 on the bottom
+# face, u = 1 on the via's metal (region 2), the solution as point data of the structure instance
+# and per template.
+cat > "$out/tsv-16.bc.json" <<'JSON'
+{"symmesh": "boundary-conditions/1",
+ "dirichlet": [{"on": {"box": {"min": [-100, -100, -100], "max": [100, 100, 0]}}, "value": 0},
+               {"on": {"region": 2}, "value": 1}]}
+JSON
+run "$bin" solve "$out/tsv-16.auto.tmesh" --bc "$out/tsv-16.bc.json" --coefficient 1=2 \
+  -o "$out/tsv-16.solution.vtu" --templated "$out/tsv-16.solution.tmesh" \
+  --report "$out/tsv-16.solution.report.json" --quiet || exit 1
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"
