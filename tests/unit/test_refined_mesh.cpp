@@ -1,9 +1,12 @@
 // Definition 3.1 (refined mesh), spec/definitions.md#def-3-1: midpoint refinements refine their
 // mesh in 2D and 3D; the reverse direction (the dissertation's printed inclusion), a changed
-// region, and a mesh with the other diagonals do not.
+// region, and a mesh with the other diagonals do not. Definition 2.11 (geometry of a mesh, Eq.
+// 2.9) on the same meshes: ξ̃(x) is the regions of the cells holding x, and a refinement describes
+// the same geometry.
 #include <gtest/gtest.h>
 
 #include "symmesh/core/kernel.h"
+#include "symmesh/core/geometry_of_mesh.h"
 #include "symmesh/core/refined_mesh.h"
 
 #include <map>
@@ -111,4 +114,39 @@ TEST(RefinedMesh, BisectedTetrahedron3D) {
   // One child only: the parent is not covered.
   EXPECT_FALSE(is_refinement(m, make<3>(pts, {{Simplex{0, 2, 3, 4}, 1}}), &why));
   EXPECT_NE(why.str().find("not the union"), std::string::npos);
+}
+
+namespace {
+Point<Exact, 2> q2(int x, int y, int d) {
+  Point<Exact, 2> p;
+  p[0] = Exact(x) / Exact(d);
+  p[1] = Exact(y) / Exact(d);
+  return p;
+}
+} // namespace
+
+TEST(GeometryOfMesh, RegionsAtPointsEq29) {
+  const auto m = squares();
+  EXPECT_EQ(geometry_regions_at(m, q2(1, 1, 4)), (std::set<int>{1})); // inside region 1
+  EXPECT_EQ(geometry_regions_at(m, q2(7, 1, 4)), (std::set<int>{2})); // inside region 2
+  EXPECT_EQ(geometry_regions_at(m, q2(1, 1, 2) + q2(1, 0, 2)), (std::set<int>{1, 2})); // x = 1
+  EXPECT_EQ(geometry_regions_at(m, q2(1, 0, 1)), (std::set<int>{1, 2})); // shared vertex
+  EXPECT_TRUE(geometry_regions_at(m, q2(5, 1, 2)).empty());              // off us(M)
+  EXPECT_FALSE(in_geometry(m, q2(5, 1, 2)));
+  EXPECT_TRUE(in_geometry(m, q2(1, 1, 2)));
+  // A refinement describes the same geometry (Def 3.1 with Eq. 2.9), at every vertex and centroid
+  // of the refinement's cells.
+  const auto r = midpoint_refinement(m);
+  for (const auto& c : r.mesh.cells()) {
+    const auto pts = r.mesh.coords(c);
+    Point<Exact, 2> g = zero_point<Exact, 2>();
+    for (const auto& p : pts) {
+      EXPECT_EQ(geometry_regions_at(m, p), geometry_regions_at(r, p));
+      g = g + p;
+    }
+    g = scaled<Exact, 2>(g, Exact(1) / Exact(3));
+    EXPECT_EQ(geometry_regions_at(m, g), geometry_regions_at(r, g));
+  }
+  // The other diagonals: same geometry, and not a refinement.
+  EXPECT_EQ(geometry_regions_at(squares(true), q2(1, 1, 4)), (std::set<int>{1}));
 }
