@@ -5,7 +5,7 @@
 /// lengths, squared relative volume (Gram determinant), squared circumradius, the squared cosine of
 /// an angle with its sign, the squared radius-edge ratio, and the squared volume-length measure.
 /// Comparisons of squares order the measures themselves (all are non-negative), so a quality
-/// vector (Def 2.20) of squared scores sorts like the scores. The reports' `double` values
+/// vector (Def 2.20) of squared scores sorts like the scores. The reports' floating-point values
 /// (mesh/quality.h) are their square roots. Not here: the inradius and min-containment ball
 /// (Def 2.15) and the radius ratio (Def 2.18) — they need facet areas, i.e. square roots.
 #pragma once
