@@ -38,6 +38,7 @@ bench: deps
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/gummel.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/fem.py $(BENCH_BUILD)/bench/bench_fem docs/benchmarks
+	/usr/bin/python3 bench/fem_command.py $(BENCH_BUILD)/symmesh docs/benchmarks
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')
