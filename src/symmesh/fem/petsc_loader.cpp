@@ -1,6 +1,8 @@
 // Opens the PETSc module on first use (spec/fem.md#petsc, petsc_solver.h).
 #include "symmesh/fem/petsc_solver.h"
 
+#include "symmesh/mesh/module_path.h"
+
 #include <dlfcn.h>
 
 #include <filesystem>
@@ -13,14 +15,11 @@ namespace symmesh::fem {
 namespace {
 
 std::vector<std::string> module_candidates() {
-  std::vector<std::string> out;
-  std::error_code ec;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) out.push_back((exe.parent_path() / "libsymmesh_petsc.so").string());
 #ifdef SYMMESH_PETSC_MODULE_PATH
-  out.push_back(SYMMESH_PETSC_MODULE_PATH);
+  return mesh::module_candidates("libsymmesh_petsc.so", SYMMESH_PETSC_MODULE_PATH);
+#else
+  return mesh::module_candidates("libsymmesh_petsc.so", nullptr);
 #endif
-  return out;
 }
 
 void* module_handle(std::string* why) {

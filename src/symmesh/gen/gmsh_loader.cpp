@@ -2,6 +2,8 @@
 #include "symmesh/gen/gmsh_mesher.h"
 #include "symmesh/gen/triangle_mesher.h"
 
+#include "symmesh/mesh/module_path.h"
+
 #include <dlfcn.h>
 
 #include <filesystem>
@@ -13,16 +15,12 @@
 namespace symmesh::gen {
 namespace {
 
-/// Next to the running executable (an installed or copied tree), then where it was built.
 std::vector<std::string> module_candidates() {
-  std::vector<std::string> out;
-  std::error_code ec;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) out.push_back((exe.parent_path() / "libsymmesh_gmsh.so").string());
 #ifdef SYMMESH_GMSH_MODULE_PATH
-  out.push_back(SYMMESH_GMSH_MODULE_PATH);
+  return mesh::module_candidates("libsymmesh_gmsh.so", SYMMESH_GMSH_MODULE_PATH);
+#else
+  return mesh::module_candidates("libsymmesh_gmsh.so", nullptr);
 #endif
-  return out;
 }
 
 /// The module's handle, opened once; throws MeshingError when it cannot be.
