@@ -26,6 +26,13 @@
 #include <variant>
 
 namespace symmesh::apps {
+
+std::size_t peak_rss_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return std::size_t(u.ru_maxrss) * 1024;
+}
+
 namespace {
 
 struct GenerateOptions {
@@ -53,12 +60,6 @@ std::string round_text(double v) {
   std::ostringstream s;
   s << std::setprecision(3) << v;
   return s.str();
-}
-
-std::size_t peak_rss_bytes() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return std::size_t(u.ru_maxrss) * 1024;
 }
 
 template <class FT, int D>

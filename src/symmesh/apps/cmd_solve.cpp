@@ -31,8 +31,6 @@
 #include <memory>
 #include <sstream>
 
-#include <sys/resource.h>
-
 namespace symmesh::apps {
 namespace {
 
@@ -77,12 +75,6 @@ std::map<mesh::RegionIdType, double> parse_coefficients(const std::vector<std::s
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-long peak_rss_bytes() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss * 1024L;
 }
 
 int run_solve(const SolveOptions& o) {

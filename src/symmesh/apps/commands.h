@@ -2,6 +2,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <string>
 
 namespace symmesh::apps {
@@ -17,6 +18,9 @@ void add_generate(CLI::App& app, int& exit_code);
 void add_example(CLI::App& app, int& exit_code);
 void add_cut(CLI::App& app, int& exit_code);
 void add_solve(CLI::App& app, int& exit_code);
+
+/// Peak resident set size of this process, in bytes (the reports' peak_rss_bytes).
+std::size_t peak_rss_bytes();
 
 /// Prints "symmesh: error: <message>" as one line on stderr.
 void print_error(const std::string& message);

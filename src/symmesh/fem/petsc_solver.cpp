@@ -26,8 +26,7 @@ struct Part {
   std::vector<PetscInt> ghosts;       ///< sorted global ids
   std::vector<InstanceMap> instances; ///< boundary ids and interior_first in local ids
   std::vector<GlobalIndex> dirichlet; ///< owned Dirichlet unknowns, local ids
-  std::vector<std::vector<double>> template_diagonal, template_mass_diagonal;
-  Vec xg = nullptr, yg = nullptr; ///< ghosted work vectors
+  Vec xg = nullptr, yg = nullptr;     ///< ghosted work vectors
   std::size_t local_size() const { return std::size_t(rend - rstart) + ghosts.size(); }
 };
 
@@ -71,17 +70,6 @@ void split(const TemplatedCsr& a, int rank, int size, Part& p) {
   }
   for (GlobalIndex d : a.dirichlet)
     if (d >= p.rstart && d < p.rend) p.dirichlet.push_back(d - GlobalIndex(p.rstart));
-  for (const auto& t : a.templates) {
-    std::vector<double> d(t.vertices, 0.0), dm(t.vertices, 0.0);
-    for (std::size_t r = 0; r < t.vertices; ++r)
-      for (auto e = t.stiffness.row_start[r]; e < t.stiffness.row_start[r + 1]; ++e)
-        if (std::size_t(t.stiffness.column[std::size_t(e)]) == r) {
-          d[r] = t.stiffness.value[std::size_t(e)];
-          if (!t.mass.empty()) dm[r] = t.mass[std::size_t(e)];
-        }
-    p.template_diagonal.push_back(std::move(d));
-    p.template_mass_diagonal.push_back(std::move(dm));
-  }
 }
 
 /// Algorithm 7.2 on this rank's instances: x's owned part and ghosts in, A x's owned part out
@@ -122,22 +110,7 @@ PetscErrorCode shell_diagonal(Mat m, Vec d) {
   PetscCall(VecGhostGetLocalForm(p->yg, &dl));
   PetscScalar* da = nullptr;
   PetscCall(VecGetArray(dl, &da));
-  std::vector<GlobalIndex> ids;
-  for (const auto& in : p->instances) {
-    const auto& t = p->a->templates[in.template_index];
-    const auto& kd = p->template_diagonal[in.template_index];
-    in.boundary_ids(ids);
-    for (std::size_t r = 0; r < t.vertices; ++r) {
-      GlobalIndex g = in.interior_first + GlobalIndex(r) - GlobalIndex(t.boundary);
-      if (r < t.boundary) {
-        g = ids[r];
-        if (g < 0) continue;
-      }
-      da[g] +=
-          in.coefficient * kd[r] + in.reaction * p->template_mass_diagonal[in.template_index][r];
-    }
-  }
-  for (GlobalIndex g : p->dirichlet) da[g] = 0; // set to 1 after the ghosts are added
+  symmesh::fem::add_diagonal_instances(p->a->templates, p->instances, true, da);
   PetscCall(VecRestoreArray(dl, &da));
   PetscCall(VecGhostRestoreLocalForm(p->yg, &dl));
   PetscCall(VecGhostUpdateBegin(p->yg, ADD_VALUES, SCATTER_REVERSE));

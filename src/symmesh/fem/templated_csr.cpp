@@ -307,8 +307,9 @@ void TemplatedCsr::multiply(const double* x, double* y, bool constrained) const 
   multiply_instances(templates, instances, unknowns, dirichlet, x, y, constrained);
 }
 
-std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
-  std::vector<double> d(unknowns, 0.0);
+void add_diagonal_instances(const std::vector<TemplateMatrix>& templates,
+                            const std::vector<InstanceMap>& instances, bool skip_dirichlet,
+                            double* d) {
   std::vector<GlobalIndex> ids;
   for (const auto& in : instances) {
     const auto& t = templates[in.template_index];
@@ -316,13 +317,21 @@ std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
     in.boundary_ids(ids);
     for (std::size_t r = 0; r < t.vertices; ++r) {
       GlobalIndex g = r < t.boundary ? ids[r] : in.interior_first + GlobalIndex(r - t.boundary);
-      if (g < 0) g = -1 - g;
+      if (g < 0) {
+        if (skip_dirichlet) continue;
+        g = -1 - g;
+      }
       for (std::int64_t e = k.row_start[r]; e < k.row_start[r + 1]; ++e)
         if (std::size_t(k.column[std::size_t(e)]) == r)
           d[std::size_t(g)] += in.coefficient * k.value[std::size_t(e)] +
                                (t.mass.empty() ? 0.0 : in.reaction * t.mass[std::size_t(e)]);
     }
   }
+}
+
+std::vector<double> TemplatedCsr::diagonal(bool constrained) const {
+  std::vector<double> d(unknowns, 0.0);
+  add_diagonal_instances(templates, instances, constrained, d.data());
   if (constrained)
     for (GlobalIndex g : dirichlet) d[std::size_t(g)] = 1.0;
   return d;

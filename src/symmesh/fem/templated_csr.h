@@ -121,6 +121,13 @@ void multiply_instances(const std::vector<TemplateMatrix>& templates,
                         const std::vector<GlobalIndex>& dirichlet, const double* x, double* y,
                         bool constrained);
 
+/// Adds the diagonals κ_i (K_t)_rr + σ_i (M_t)_rr of the listed instances into d (in their index
+/// space), leaving out the Dirichlet rows (negative boundary ids) when `skip_dirichlet`, without
+/// forming the matrix: the Jacobi preconditioner of the TCSR and of its PETSc MATSHELL.
+void add_diagonal_instances(const std::vector<TemplateMatrix>& templates,
+                            const std::vector<InstanceMap>& instances, bool skip_dirichlet,
+                            double* d);
+
 /// Assembles the TCSR of a templated mesh (triangles in 2D, tetrahedra in 3D): every template's
 /// stiffness once, the global numbering from the compact SVB (union-find over the instances'
 /// boundary rows; each instance's interior rows numbered consecutively after its new boundary
