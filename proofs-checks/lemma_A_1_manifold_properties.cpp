@@ -5,7 +5,8 @@
 // int*_k(A ∩ B) = int*_k(A) ∩ int*_k(B). int*_k of a cell is its relative interior when its
 // dimension is k and empty otherwise, so (iii) and (iv) are checked at the centroids, which lie in
 // the relative interiors. Dropping k >= DIM(B) in (iii): an edge of a triangle is a 1-manifold
-// with non-empty int*_1, while int*_1 of the triangle is empty.
+// with non-empty int*_1, while int*_1 of the triangle is empty. The holds property's dropped
+// variant asserts (iv) also on two crossing segments, which lie in no common k-manifold.
 #include "proofs-checks/generators.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/core/intersection_partition.h"
@@ -62,8 +63,10 @@ bool interiors_of_intersection(const LinearCell<D>& a, const LinearCell<D>& b) {
   return !(in_int_k<D>(a, k, y) && in_int_k<D>(b, k, y)) || (c && c->dim == k);
 }
 
+/// (ii)-(iv) on every pair of cells; `common_manifold` false also asserts (iv) where A and B lie
+/// in no common k-manifold (the hypothesis the correction adds, dropped).
 template <int D>
-bool manifold_properties(const LinearPair<D>& pair) {
+bool manifold_properties(const LinearPair<D>& pair, bool common_manifold = true) {
   for (const auto& a : pair.a.cells)
     for (const auto& b : pair.b.cells) {
       const auto c = core::intersect<Exact, D>(a, b);
@@ -72,25 +75,34 @@ bool manifold_properties(const LinearPair<D>& pair) {
       const auto x = core::centroid<Exact, D>(*c);
       if (in_int_k<D>(*c, b.dim, x) && !in_int_k<D>(b, b.dim, x)) return false; // (iii)
       // (iv) needs A and B inside one k-manifold (see the counterexample below).
-      if ((std::max(a.dim, b.dim) == D || same_flat<D>(a, b)) &&
+      if ((!common_manifold || std::max(a.dim, b.dim) == D || same_flat<D>(a, b)) &&
           !interiors_of_intersection<D>(a, b))
         return false;
     }
   return true;
 }
 
-/// (iv) for two segments crossing transversally at B's midpoint (1-manifolds in R^D): the
-/// midpoint is in int*_1(A) ∩ int*_1(B), but A ∩ B is a point and int*_1 of it is empty.
+/// Two segments crossing transversally at B's midpoint (1-manifolds in R^D, in no common one).
 template <int D>
-bool crossing_segments_satisfy_iv(int a, int b) {
+LinearPair<D> crossing_segments(int a, int b) {
   const auto p = [](int x, int y) {
     Point<D> q = core::zero_point<Exact, D>();
     q[0] = x;
     q[1] = y;
     return q;
   };
-  return interiors_of_intersection<D>(core::make_convex_cell<Exact, D>({p(-a, 0), p(a, 0)}),
-                                      core::make_convex_cell<Exact, D>({p(0, -b), p(0, b)}));
+  LinearPair<D> out;
+  out.a.cells = {core::make_convex_cell<Exact, D>({p(-a, 0), p(a, 0)})};
+  out.b.cells = {core::make_convex_cell<Exact, D>({p(0, -b), p(0, b)})};
+  return out;
+}
+
+/// (iv) for the crossing segments: the midpoint is in int*_1(A) ∩ int*_1(B), but A ∩ B is a
+/// point and int*_1 of it is empty.
+template <int D>
+bool crossing_segments_satisfy_iv(int a, int b) {
+  const auto pair = crossing_segments<D>(a, b);
+  return interiors_of_intersection<D>(pair.a.cells.front(), pair.b.cells.front());
 }
 
 /// (iii) without k >= DIM(B): A an edge of a 2-cell B, k = DIM(A) = 1.
@@ -109,10 +121,7 @@ bool edge_interior_in_cell_interior(const LinearPair<D>& pair) {
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
-  p.push_back({kLemma,
-               "manifold_properties" + d,
-               D,
-               Kind::holds,
+  p.push_back({kLemma, "manifold_properties" + d, D, Kind::holds,
                "Lemma A.1 (ii)-(iv) on every pair of cells of two random geometries: the "
                "intersection has dimension <= both, its k-interior lies in the cell's k-interior, "
                "and k-interiors of the intersection are the intersection of k-interiors",
@@ -123,7 +132,15 @@ void add(std::vector<Property>& p) {
                                         picture<D>(c));
                  });
                },
-               {}});
+               [] {
+                 return rc::detail::toProperty([] {
+                   const int a = *rc::gen::inRange(1, 20), b = *rc::gen::inRange(1, 20);
+                   const Described<LinearPair<D>> c{crossing_segments<D>(a, b),
+                                                    "segments crossing at B's midpoint"};
+                   SYMMESH_PROOF_ASSERT(manifold_properties<D>(c.value, false), record<D>(c),
+                                        picture<D>(c));
+                 });
+               }});
   p.push_back({kLemma,
                "interior_below_cell_dimension" + d,
                D,
