@@ -15,10 +15,11 @@ namespace symmesh::fem {
 namespace {
 
 std::vector<std::string> module_candidates() {
+  static const char here = 0; // an address inside the object this loader is linked into
 #ifdef SYMMESH_PETSC_MODULE_PATH
-  return mesh::module_candidates("libsymmesh_petsc.so", SYMMESH_PETSC_MODULE_PATH);
+  return mesh::module_candidates("libsymmesh_petsc.so", SYMMESH_PETSC_MODULE_PATH, &here);
 #else
-  return mesh::module_candidates("libsymmesh_petsc.so", nullptr);
+  return mesh::module_candidates("libsymmesh_petsc.so", nullptr, &here);
 #endif
 }
 

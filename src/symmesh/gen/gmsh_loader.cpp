@@ -16,10 +16,11 @@ namespace symmesh::gen {
 namespace {
 
 std::vector<std::string> module_candidates() {
+  static const char here = 0; // an address inside the object this loader is linked into
 #ifdef SYMMESH_GMSH_MODULE_PATH
-  return mesh::module_candidates("libsymmesh_gmsh.so", SYMMESH_GMSH_MODULE_PATH);
+  return mesh::module_candidates("libsymmesh_gmsh.so", SYMMESH_GMSH_MODULE_PATH, &here);
 #else
-  return mesh::module_candidates("libsymmesh_gmsh.so", nullptr);
+  return mesh::module_candidates("libsymmesh_gmsh.so", nullptr, &here);
 #endif
 }
 
