@@ -1,5 +1,5 @@
 # The public C++ API as a shared library (libsymmesh.so, src/symmesh/symmesh.h, docs/api.md), the
-# installed CMake package (find_package(symmesh), target symmesh::symmesh).
+# installed CMake package (find_package(symmesh), target symmesh::symmesh) and the Python module.
 # Included from the top-level CMakeLists.txt once every library target and the CLI exist.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -53,3 +53,4 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/symmeshConfigVersio
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/symmeshConfig.cmake
   ${CMAKE_CURRENT_BINARY_DIR}/symmeshConfigVersion.cmake DESTINATION ${SYMMESH_INSTALL_CMAKEDIR})
 
+add_subdirectory(python)
