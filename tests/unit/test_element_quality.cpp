@@ -70,3 +70,39 @@ TEST(ElementQuality, QualityVectorIsSorted) {
   EXPECT_LT(v[0], v[1]);
   EXPECT_EQ(v[0], q(1, 2));
 }
+
+// Def 2.16 in 3D: the regular tetrahedron has every dihedral angle arccos(1/3); the corner
+// tetrahedron has right dihedral angles along the axes and arccos(1/√3) along the far face.
+TEST(ElementQuality, DihedralAnglesOfRegularAndCornerTetrahedra) {
+  const std::vector<Point<Exact, 3>> regular{p<3>({1, 1, 1}), p<3>({1, -1, -1}), p<3>({-1, 1, -1}),
+                                             p<3>({-1, -1, 1})};
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      int o[2], n = 0;
+      for (int v = 0; v < 4; ++v)
+        if (v != i && v != j) o[n++] = v;
+      const auto [sign, c2] = signed_squared_dihedral_cosine<Exact>(regular[i], regular[j],
+                                                                    regular[o[0]], regular[o[1]]);
+      EXPECT_EQ(sign, 1);
+      EXPECT_EQ(c2, Exact(1) / 9);
+    }
+  const std::vector<Point<Exact, 3>> corner{p<3>({0, 0, 0}), p<3>({1, 0, 0}), p<3>({0, 1, 0}),
+                                            p<3>({0, 0, 1})};
+  const auto [sign, c2] =
+      signed_squared_dihedral_cosine<Exact>(corner[0], corner[1], corner[2], corner[3]);
+  EXPECT_EQ(sign, 0); // a right angle along the x axis
+  EXPECT_EQ(c2, Exact(0));
+  const auto far =
+      signed_squared_dihedral_cosine<Exact>(corner[1], corner[2], corner[3], corner[0]);
+  EXPECT_EQ(far.first, 1);
+  EXPECT_EQ(far.second, Exact(1) / 3);
+  const auto [smallest, largest] = smallest_and_largest_dihedral_angle<Exact>(corner);
+  EXPECT_EQ(smallest, (std::pair<int, int>{1, 2}));
+  EXPECT_EQ(largest, (std::pair<int, int>{0, 1}));
+  // A sliver (four nearly coplanar points) has a dihedral angle near 180°: negative cosine.
+  const std::vector<Point<Exact, 3>> sliver{p<3>({0, 0, 0}), p<3>({4, 0, 0}), p<3>({2, 2, 1}),
+                                            p<3>({2, -2, 1})};
+  const auto flat =
+      signed_squared_dihedral_cosine<Exact>(sliver[2], sliver[3], sliver[0], sliver[1]);
+  EXPECT_EQ(flat.first, -1);
+}

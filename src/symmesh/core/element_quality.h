@@ -91,6 +91,48 @@ std::pair<int, int> smallest_and_largest_angle(const std::vector<Point<FT, D>>& 
   return {small, large};
 }
 
+/// Def 2.16 in 3D: the interior dihedral angle of a tetrahedron at edge ab, between its faces abc
+/// and abd, as (sign of cos, cos²). Measured in the plane orthogonal to ab: c − a and d − a lose
+/// their components along ab (a rational projection), and the angle between the rests is the
+/// dihedral angle.
+template <class FT>
+std::pair<int, FT> signed_squared_dihedral_cosine(const Point<FT, 3>& a, const Point<FT, 3>& b,
+                                                  const Point<FT, 3>& c, const Point<FT, 3>& d) {
+  const auto e = b - a;
+  const FT ee = dot<FT, 3>(e, e);
+  const auto across = [&](const Point<FT, 3>& p) {
+    const auto w = p - a;
+    return w - scaled<FT, 3>(e, dot<FT, 3>(w, e) / ee);
+  };
+  const auto zero = zero_point<FT, 3>();
+  return signed_squared_cosine<FT, 3>(zero, across(c), across(d));
+}
+
+/// Def 2.16 for a tetrahedron: the edges (as vertex index pairs) with the smallest and the largest
+/// dihedral angle.
+template <class FT>
+std::pair<std::pair<int, int>, std::pair<int, int>>
+smallest_and_largest_dihedral_angle(const std::vector<Point<FT, 3>>& t) {
+  std::vector<std::pair<int, int>> edges;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) edges.push_back({i, j});
+  const auto key = [&](std::pair<int, int> e) {
+    int o[2], n = 0;
+    for (int v = 0; v < 4; ++v)
+      if (v != e.first && v != e.second) o[n++] = v;
+    const auto [sign, c2] =
+        signed_squared_dihedral_cosine<FT>(t[std::size_t(e.first)], t[std::size_t(e.second)],
+                                           t[std::size_t(o[0])], t[std::size_t(o[1])]);
+    return sign >= 0 ? c2 : -c2; // decreasing in the angle
+  };
+  auto small = edges[0], large = edges[0];
+  for (const auto& e : edges) {
+    if (key(e) > key(small)) small = e;
+    if (key(e) < key(large)) large = e;
+  }
+  return {small, large};
+}
+
 /// Def 2.17: the squared radius-edge ratio R_circ² / l_min².
 template <class FT, int D>
 FT squared_radius_edge_ratio(const std::vector<Point<FT, D>>& s) {
