@@ -8,7 +8,7 @@ PACKAGES=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libboost-graph-dev
   libeigen3-dev libtbb-dev
   libgtest-dev libgmock-dev librapidcheck-dev
-  libgraphviz-dev graphviz
+  libgraphviz-dev graphviz librsvg2-bin
   libcli11-dev nlohmann-json3-dev
   libgmsh-dev gmsh
   libtet1.5-dev

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   symmesh::apps::add_example(app, exit_code);
   symmesh::apps::add_cut(app, exit_code);
   symmesh::apps::add_solve(app, exit_code);
+  symmesh::apps::add_render(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -2,6 +2,7 @@
 // double here only for drawing; nothing is decided from them.
 #include "symmesh/io/svg.h"
 
+#include "symmesh/io/colour.h"
 #include "symmesh/io/plot_box.h"
 
 #include <algorithm>
@@ -29,12 +30,6 @@ struct Frame : detail::PlotBox {
 
 P to_p(const core::Point<Exact, 2>& q) {
   return {CGAL::to_double(q[0]), CGAL::to_double(q[1])};
-}
-
-std::string colour(std::size_t k) {
-  static const char* palette[] = {"#8dd3c7", "#ffffb3", "#bebada", "#fb8072", "#80b1d3",
-                                  "#fdb462", "#b3de69", "#fccde5", "#d9d9d9", "#bc80bd"};
-  return palette[k % 10];
 }
 
 std::string num(double x) {
@@ -84,7 +79,7 @@ std::string complex_svg(const core::ElementComplex<Exact, 2>& m) {
   if (m.points.empty()) f.add({0, 0});
   std::ostringstream os;
   os << header(f);
-  draw_complex(os, f, m, colour(0));
+  draw_complex(os, f, m, fill_colour(0));
   os << "</svg>\n";
   return os.str();
 }
@@ -100,7 +95,7 @@ std::string structure_svg(const core::TemplatedStructure<Exact, 2>& x) {
   if (ids.empty()) f.add({0, 0});
   std::ostringstream os;
   os << header(f);
-  for (std::size_t k = 0; k < inst.size(); ++k) draw_complex(os, f, inst[k], colour(ids[k].i));
+  for (std::size_t k = 0; k < inst.size(); ++k) draw_complex(os, f, inst[k], fill_colour(ids[k].i));
   for (std::size_t k = 0; k < inst.size(); ++k) {
     double cx = 0, cy = 0;
     for (const auto& q : inst[k].points) {
