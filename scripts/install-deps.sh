@@ -15,7 +15,7 @@ PACKAGES=(
   petsc-dev openmpi-bin
   zlib1g-dev
   python3-meshio python3-matplotlib python3-vtk9
-  pybind11-dev python3-pybind11 python3-pytest python3-networkx python3-numpy
+  pybind11-dev python3-pybind11 python3-dev python3-pytest python3-networkx python3-numpy
 )
 
 # Optional groups: --fuzz adds clang-14 and its libFuzzer/sanitizer runtime (fuzz/run.sh).
