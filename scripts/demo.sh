@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job on built-in examples: check the Fig. 4.3 templated mesh and the Fig. 4.4
 # non-conforming structure, render instance graphs and boundary patch partitions (Figs 4.10,
-# 6.8, a 3D rotational slice), spot-check the interface lemmas, and generate templated meshes of
-# built-in 2D objects and the 3D open TSV.
+# 6.8, a 3D rotational slice), spot-check the interface lemmas, generate templated meshes of
+# built-in 2D objects and the 3D open TSV, and draw them (symmesh render: every built-in 2D
+# object into out/render/).
 set -uo pipefail
 bin=${1:-build/symmesh}
 out=${2:-out}
@@ -50,6 +51,27 @@ for method in auto conventional; do
   run "$bin" generate "$out/tsv-16.json" --size 0.08 --method "$method" -o "$out/tsv-16.$method.vtu" \
     --templated "$out/tsv-16.$method.tmesh" --report "$out/tsv-16.$method.report.json" --quiet || exit 1
 done
+# Pictures (spec/outputs.md#render, #instance-graph): every built-in 2D object meshed coarsely
+# and rendered (cells by template, red instance interfaces, black boundary), the bridge also by
+# smallest angle and by instance; the bridge's instance graph in both views; the 16-TSV as a
+# ParaView multiblock (one block per template) and as a boundary-surface picture.
+mkdir -p "$out/render"
+for name in $("$bin" example --list | cut -f1); do
+  json="$out/render/$name.json"
+  "$bin" example "$name" -o "$json" || exit 1
+  if grep -q '"dimension": 3' "$json"; then rm -f "$json"; continue; fi
+  run "$bin" generate "$json" --size 0.1 --templated "$out/render/$name.tmesh" --quiet || exit 1
+  run "$bin" render "$out/render/$name.tmesh" -o "$out/render/$name.png" --quiet || exit 1
+done
+for colour in quality instance; do
+  run "$bin" render "$out/bridge.tmesh" --color "$colour" -o "$out/bridge.$colour.png" || exit 1
+done
+run "$bin" render "$out/bridge.tmesh" --color quality -o "$out/bridge.quality.svg" || exit 1
+run "$bin" graph "$out/bridge.json" -o "$out/bridge_instance_graph.png" || exit 1
+run "$bin" graph "$out/bridge.json" -o "$out/bridge_instance_graph.dot" || exit 1
+run "$bin" graph "$out/bridge.json" --view instances -o "$out/bridge_instances.png" || exit 1
+run "$bin" render "$out/tsv-16.auto.tmesh" -o "$out/tsv-16.vtm" || exit 1
+run "$bin" render "$out/tsv-16.auto.tmesh" --color region -o "$out/tsv-16.surface.png" || exit 1
 # FEM on the templated TSV (spec/fem.md): P1 stiffness per template (TCSR), u = 0 on the bottom
 # face, u = 1 on the via's metal (region 2), the solution as point data of the structure instance
 # and per template.

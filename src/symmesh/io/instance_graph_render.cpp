@@ -4,6 +4,7 @@
 
 #include "symmesh/io/atomic_file.h"
 #include "symmesh/io/colour.h"
+#include "symmesh/io/svg.h"
 
 #include <graphviz/cgraph.h>
 #include <graphviz/gvc.h>
@@ -38,21 +39,6 @@ std::string escape(const std::string& s) {
   for (char c : s) {
     if (c == '"' || c == '\\') out += '\\';
     out += c;
-  }
-  return out;
-}
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else
-      out += c;
   }
   return out;
 }
@@ -133,7 +119,7 @@ std::string legend(const core::StructureReport& r, const std::vector<std::size_t
   os << "<<table border=\"0\" cellspacing=\"4\">";
   for (std::size_t i = 0; i < counts.size(); ++i)
     os << "<tr><td bgcolor=\"" << fill_colour(i) << "\" width=\"18\"> </td><td align=\"left\">"
-       << html_escape(node_name(r, i)) << ": " << counts[i] << " instances</td></tr>";
+       << xml_escape(node_name(r, i)) << ": " << counts[i] << " instances</td></tr>";
   os << "</table>>";
   return os.str();
 }

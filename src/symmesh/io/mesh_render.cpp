@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -400,43 +399,50 @@ std::string shaded(const std::string& hex, double intensity) {
   return buf;
 }
 
-std::string svg_3d(const At& at, const MeshRenderOptions& o) {
+/// A boundary triangle as the camera sees it.
+struct Projected {
+  double depth = 0; ///< mean distance towards the camera
+  std::size_t order = 0;
+  std::array<std::array<double, 2>, 3> p{};
+  std::string fill;
+};
+
+/// The front-facing boundary triangles, projected and shaded, far to near.
+std::vector<Projected> visible_faces(const At& at, const std::vector<Face>& faces,
+                                     CellColour colour) {
   const Camera cam;
-  const V3 light = unit({cam.towards[0] + 0.4 * cam.up[0] + 0.3 * cam.right[0],
-                         cam.towards[1] + 0.4 * cam.up[1] + 0.3 * cam.right[1],
-                         cam.towards[2] + 0.4 * cam.up[2] + 0.3 * cam.right[2]});
-  struct Drawn {
-    double depth;
-    std::size_t order;
-    std::array<std::array<double, 2>, 3> p;
-    std::string fill;
-  };
-  std::vector<Drawn> drawn;
-  std::vector<std::array<double, 2>> pts;
-  const auto faces = boundary_faces(at);
+  V3 light{};
+  for (std::size_t d = 0; d < 3; ++d)
+    light[d] = cam.towards[d] + 0.4 * cam.up[d] + 0.3 * cam.right[d];
+  light = unit(light);
+  std::vector<Projected> out;
   for (std::size_t k = 0; k < faces.size(); ++k) {
     const auto& f = faces[k];
-    const V3 &a = at.x[std::size_t(f.v[0])], &b = at.x[std::size_t(f.v[1])],
-             &c = at.x[std::size_t(f.v[2])];
-    const V3 n = unit(cross(sub(b, a), sub(c, a)));
+    const auto x = [&](int q) -> const V3& { return at.x[std::size_t(f.v[std::size_t(q)])]; };
+    const V3 n = unit(cross(sub(x(1), x(0)), sub(x(2), x(0))));
     if (dot(n, cam.towards) <= 0) continue; // back face: hidden on a closed surface
-    Drawn d{0,
-            k,
-            {},
-            shaded(cell_colour(at.cells[f.cell], o.colour),
-                   0.35 + 0.65 * std::max(0.0, dot(n, light)))};
+    Projected d;
+    d.order = k;
+    d.fill =
+        shaded(cell_colour(at.cells[f.cell], colour), 0.35 + 0.65 * std::max(0.0, dot(n, light)));
     for (int q = 0; q < 3; ++q) {
-      const V3& x = at.x[std::size_t(f.v[std::size_t(q)])];
-      d.p[std::size_t(q)] = {dot(x, cam.right), dot(x, cam.up)};
-      d.depth += dot(x, cam.towards) / 3;
-      pts.push_back(d.p[std::size_t(q)]);
+      d.p[std::size_t(q)] = {dot(x(q), cam.right), dot(x(q), cam.up)};
+      d.depth += dot(x(q), cam.towards) / 3;
     }
-    drawn.push_back(d);
+    out.push_back(d);
   }
   // Painter's order: far faces first; ties by face order keep the output deterministic.
-  std::sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) {
+  std::sort(out.begin(), out.end(), [](const Projected& a, const Projected& b) {
     return a.depth != b.depth ? a.depth < b.depth : a.order < b.order;
   });
+  return out;
+}
+
+std::string svg_3d(const At& at, const MeshRenderOptions& o) {
+  const auto faces = boundary_faces(at);
+  const auto drawn = visible_faces(at, faces, o.colour);
+  std::vector<std::array<double, 2>> pts;
+  for (const auto& d : drawn) pts.insert(pts.end(), d.p.begin(), d.p.end());
   const Frame f = fit(pts, o.width);
   const double w = std::max(f.width(), 420.0);
   std::ostringstream os;
@@ -492,9 +498,16 @@ mesh::TemplatedMeshCompactSvb block_of(const mesh::TemplatedMeshCompactSvb& t, s
   return b;
 }
 
+/// The \pre of mesh_svg and write_vtm: the view and the writers index without checking.
+void require_valid(const mesh::TemplatedMeshCompactSvb& t) {
+  std::ostringstream why;
+  if (!t.is_valid(&why)) throw std::invalid_argument("not a valid templated mesh: " + why.str());
+}
+
 } // namespace
 
 std::string mesh_svg(const mesh::TemplatedMeshCompactSvb& t, const MeshRenderOptions& o) {
+  require_valid(t);
   if (!(o.width >= 100 && o.width <= 4000))
     throw std::invalid_argument("--width must be between 100 and 4000 pixels");
   if (t.templated.point_dimension == 3 && o.colour == CellColour::quality)
@@ -531,6 +544,7 @@ void write_png_from_svg(const std::string& svg, const std::string& path) {
 }
 
 std::size_t write_vtm(const mesh::TemplatedMeshCompactSvb& t, const std::string& path) {
+  require_valid(t);
   namespace fs = std::filesystem;
   const fs::path vtm(path);
   const std::string stem = vtm.stem().string();

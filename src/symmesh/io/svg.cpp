@@ -9,7 +9,9 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <iterator>
 #include <sstream>
+#include <utility>
 
 namespace symmesh::io {
 namespace {
@@ -72,6 +74,21 @@ std::string header(const Frame& f) {
 }
 
 } // namespace
+
+std::string xml_escape(const std::string& s) {
+  static const std::pair<char, const char*> entities[] = {
+      {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}};
+  std::string out;
+  for (char c : s) {
+    const auto* e = std::find_if(std::begin(entities), std::end(entities),
+                                 [c](const auto& entity) { return entity.first == c; });
+    if (e == std::end(entities))
+      out += c;
+    else
+      out += e->second;
+  }
+  return out;
+}
 
 std::string complex_svg(const core::ElementComplex<Exact, 2>& m) {
   Frame f;

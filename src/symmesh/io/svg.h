@@ -14,4 +14,8 @@ std::string structure_svg(const core::TemplatedStructure<Exact, 2>& x);
 /// A plain 2D element complex.
 std::string complex_svg(const core::ElementComplex<Exact, 2>& m);
 
+/// `s` with the XML-special characters & < > " replaced by their entities, for text and
+/// attribute values of SVG and of Graphviz's HTML-like labels.
+std::string xml_escape(const std::string& s);
+
 } // namespace symmesh::io
