@@ -5,6 +5,8 @@
 
 #include "proofs-checks/plc_generators.h"
 
+#include "proofs-checks/generator_support.h"
+
 #include "symmesh/core/constrained_delaunay.h"
 #include "symmesh/core/edge_protected.h"
 #include "symmesh/core/templated_structure.h"
@@ -24,53 +26,17 @@ namespace symmesh::proofs::gen {
 
 using core::Simplex;
 using core::VertexId;
+// Shared with the other generators (generator_support.h).
+using detail::chance;
+using detail::dedupe;
+using detail::full_dimensional;
+using detail::grid_value;
+using detail::K;
+using detail::pick;
+using detail::points_text;
+using detail::rational;
 
 namespace {
-
-using K = CGAL::Epeck;
-static_assert(std::is_same_v<K::FT, Exact>, "PLC generators build points of the core's type");
-
-int pick(int lo, int hi) {
-  return *rc::gen::resize(100, rc::gen::inRange(lo, hi + 1));
-}
-bool chance(int percent) {
-  return pick(0, 99) < percent;
-}
-Exact rational(int num, int den) {
-  return Exact(num) / Exact(den);
-}
-Exact grid_value(int lo, int hi) {
-  const int q = chance(25) ? 2 : 1;
-  return rational(pick(lo * q, hi * q), q);
-}
-
-template <int D>
-std::string points_text(const PointSet<D>& pts) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < pts.size(); ++i) s += (i ? " " : "") + text<D>(pts[i]);
-  return s + "]";
-}
-
-template <int D>
-PointSet<D> dedupe(const PointSet<D>& pts) {
-  std::set<Point<D>, core::PointLess<Exact, D>> seen;
-  PointSet<D> out;
-  for (const auto& p : pts)
-    if (seen.insert(p).second) out.push_back(p);
-  return out;
-}
-
-template <int D>
-bool full_dimensional(const PointSet<D>& pts) {
-  if (pts.size() < std::size_t(D + 1)) return false;
-  core::Matrix<Exact> m;
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    std::vector<Exact> row(D);
-    for (int d = 0; d < D; ++d) row[d] = pts[i][d] - pts[0][d];
-    m.push_back(row);
-  }
-  return core::rank(m) == std::size_t(D);
-}
 
 /// n grid points in [0, hi]^D (halves one time in four), full-dimensional.
 template <int D>
