@@ -1,0 +1,300 @@
+// Definition 4.7 (template boundary mappings) with their exact domains, and the exact small
+// geometry they need — spec/boundary-patches.md#def-4-7
+//
+// Part 1 of the definitions behind boundary_patch_partition.h (then boundary_subdivision_impl.h,
+// then boundary_patch_partition_impl.h). CGAL is used here only: exact segment/triangle
+// intersections for the mapping domains and, in 3D, constrained triangulations of each boundary
+// triangle with its cuts. The public headers stay free of CGAL.
+//
+// Definitions only, included by the translation units that instantiate them for one number
+// type each (boundary_patch_partition.cpp: rationals; cyclotomic_instantiations.cpp: K_m).
+#pragma once
+#include "symmesh/core/boundary_patch_partition.h"
+
+#include "symmesh/core/interface_conformity.h"
+#include "symmesh/core/kernel.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Triangulation_vertex_base_2.h>
+#include <CGAL/intersections.h>
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <type_traits>
+
+namespace symmesh::core {
+namespace {
+
+template <class FT>
+using KernelOf = std::conditional_t<std::is_same_v<FT, CGAL::Epeck::FT>, CGAL::Epeck,
+                                    CGAL::Simple_cartesian<FT>>;
+
+template <class FT, int D>
+using PointSet = std::set<Point<FT, D>, PointLess<FT, D>>;
+
+template <class FT, int D>
+using PointVec = std::vector<Point<FT, D>>;
+
+// ---------------------------------------------------------------------------------------------
+// Exact small geometry.
+
+template <class FT>
+FT cross2(const Point<FT, 2>& a, const Point<FT, 2>& b) {
+  return a[0] * b[1] - a[1] * b[0];
+}
+
+template <class FT>
+Point<FT, 3> cross3(const Point<FT, 3>& a, const Point<FT, 3>& b) {
+  Point<FT, 3> r;
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+  return r;
+}
+
+template <class FT, int D>
+Point<FT, D> midpoint(const Point<FT, D>& a, const Point<FT, D>& b) {
+  return scaled<FT, D>(a + b, FT(1) / FT(2));
+}
+
+template <class FT, int D>
+Point<FT, D> centroid(const PointVec<FT, D>& p) {
+  Point<FT, D> s = zero_point<FT, D>();
+  for (const auto& q : p) s = s + q;
+  return scaled<FT, D>(s, FT(1) / FT(int(p.size())));
+}
+
+template <class FT, int D>
+Box<FT, D> piece_box(const std::vector<DomainPiece<FT, D>>& pieces) {
+  PointVec<FT, D> all;
+  for (const auto& p : pieces) all.insert(all.end(), p.vertices.begin(), p.vertices.end());
+  return box_of<FT, D>(all);
+}
+
+template <class FT, int D>
+bool box_contains(const Box<FT, D>& b, const Point<FT, D>& x) {
+  return b.overlaps(box_of<FT, D>({x}));
+}
+
+/// Orders the vertices of a convex polygon in 3D cyclically (exact: orientation comparisons in
+/// the projection that drops the dominant normal axis).
+template <class FT>
+PointVec<FT, 3> convex_cyclic_order(PointVec<FT, 3> p) {
+  std::sort(p.begin(), p.end(), PointLess<FT, 3>());
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  const auto n = cross3<FT>(p[1] - p[0], p[2] - p[0]);
+  Point<FT, 3> nn = n;
+  // p[0..2] might be collinear; find any non-degenerate normal.
+  for (std::size_t k = 3; k < p.size() && nn[0] == 0 && nn[1] == 0 && nn[2] == 0; ++k)
+    nn = cross3<FT>(p[1] - p[0], p[k] - p[0]);
+  int drop = 0;
+  for (int a = 1; a < 3; ++a)
+    if (CGAL::abs(nn[a]) > CGAL::abs(nn[drop])) drop = a;
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  const auto o = p[0];
+  std::sort(p.begin() + 1, p.end(), [&](const Point<FT, 3>& a, const Point<FT, 3>& b) {
+    const FT c = (a[u] - o[u]) * (b[v] - o[v]) - (a[v] - o[v]) * (b[u] - o[u]);
+    if (c != 0) return c > 0;
+    return dot<FT, 3>(a - o, a - o) < dot<FT, 3>(b - o, b - o);
+  });
+  return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Definition 4.7: the mappings and their exact domains.
+
+template <class FT, int D>
+std::vector<PointVec<FT, D>> boundary_facets(const ElementComplex<FT, D>& m) {
+  std::vector<PointVec<FT, D>> out;
+  const auto b = mesh_boundary(m);
+  for (const auto& e : b.elements)
+    if (e.dim() == D - 1) out.push_back(b.coords(e));
+  return out;
+}
+
+template <class FT, int D>
+void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
+                      std::vector<DomainPiece<FT, D>>& out) {
+  using K = KernelOf<FT>;
+  if constexpr (D == 2) {
+    using P = typename K::Point_2;
+    const typename K::Segment_2 sa(P(a[0][0], a[0][1]), P(a[1][0], a[1][1]));
+    const typename K::Segment_2 sb(P(b[0][0], b[0][1]), P(b[1][0], b[1][1]));
+    const auto r = CGAL::intersection(sa, sb);
+    if (!r) return;
+    auto pt = [](const P& p) {
+      Point<FT, 2> q;
+      q[0] = p.x();
+      q[1] = p.y();
+      return q;
+    };
+    if (const P* p = boost::get<P>(&*r))
+      out.push_back({{pt(*p)}});
+    else if (const auto* s = boost::get<typename K::Segment_2>(&*r))
+      out.push_back({{pt(s->source()), pt(s->target())}});
+  } else {
+    using P = typename K::Point_3;
+    auto cg = [](const Point<FT, 3>& p) { return P(p[0], p[1], p[2]); };
+    auto pt = [](const P& p) {
+      Point<FT, 3> q;
+      q[0] = p.x();
+      q[1] = p.y();
+      q[2] = p.z();
+      return q;
+    };
+    const typename K::Triangle_3 ta(cg(a[0]), cg(a[1]), cg(a[2]));
+    const typename K::Triangle_3 tb(cg(b[0]), cg(b[1]), cg(b[2]));
+    const auto r = CGAL::intersection(ta, tb);
+    if (!r) return;
+    if (const P* p = boost::get<P>(&*r))
+      out.push_back({{pt(*p)}});
+    else if (const auto* s = boost::get<typename K::Segment_3>(&*r))
+      out.push_back({{pt(s->source()), pt(s->target())}});
+    else if (const auto* t = boost::get<typename K::Triangle_3>(&*r))
+      out.push_back(
+          {convex_cyclic_order<FT>({pt(t->vertex(0)), pt(t->vertex(1)), pt(t->vertex(2))})});
+    else if (const auto* v = boost::get<std::vector<P>>(&*r)) {
+      PointVec<FT, 3> q;
+      for (const auto& p : *v) q.push_back(pt(p));
+      out.push_back({convex_cyclic_order<FT>(q)});
+    }
+  }
+}
+
+template <class FT, int D>
+EnclosingBox<FT, D> enclosure(const PointVec<FT, D>& p) {
+  std::vector<VertexId> all(p.size());
+  std::iota(all.begin(), all.end(), VertexId(0));
+  return EnclosingBox<FT, D>::of(p, all);
+}
+
+/// interf_geo(a, b) = bnd(inst a) ∩ bnd(inst b) for non-overlapping pure instances, as convex
+/// pieces in world coordinates, deduplicated (sorted vertex sets).
+template <class FT, int D>
+std::vector<DomainPiece<FT, D>> geometry_interface_pieces(
+    const std::vector<PointVec<FT, D>>& fa, const std::vector<EnclosingBox<FT, D>>& ba,
+    const std::vector<PointVec<FT, D>>& fb, const std::vector<EnclosingBox<FT, D>>& bb) {
+  std::vector<DomainPiece<FT, D>> raw;
+  for (std::size_t j = 0; j < fa.size(); ++j)
+    for (std::size_t k = 0; k < fb.size(); ++k)
+      if (ba[j].may_meet(bb[k])) add_intersection<FT, D>(fa[j], fb[k], raw);
+  std::vector<DomainPiece<FT, D>> out;
+  for (auto& p : raw) {
+    auto key = p.vertices;
+    std::sort(key.begin(), key.end(), PointLess<FT, D>());
+    bool dup = false;
+    for (const auto& q : out) {
+      auto k2 = q.vertices;
+      std::sort(k2.begin(), k2.end(), PointLess<FT, D>());
+      if (k2 == key) {
+        dup = true;
+        break;
+      }
+    }
+    if (!dup) out.push_back(std::move(p));
+  }
+  return out;
+}
+
+/// The pieces in the coordinates of the instance with world facets `world` (the instance's
+/// transformation applied to `local`, facet for facet): a piece vertex that is a facet end of
+/// that instance becomes the template's own point (no arithmetic, and later comparisons with it
+/// are by identity), any other is mapped by `t_inverse`.
+template <class FT, int D>
+std::vector<DomainPiece<FT, D>>
+pull_back(const std::vector<DomainPiece<FT, D>>& pieces, const std::vector<PointVec<FT, D>>& world,
+          const std::vector<PointVec<FT, D>>& local, const RigidTransformation<FT, D>& t_inverse) {
+  auto out = pieces;
+  for (auto& p : out)
+    for (auto& v : p.vertices) {
+      const Point<FT, D>* same = nullptr;
+      for (std::size_t k = 0; k < world.size() && !same; ++k)
+        for (std::size_t j = 0; j < world[k].size() && !same; ++j)
+          if (world[k][j] == v) same = &local[k][j];
+      v = same ? *same : t_inverse(v);
+    }
+  return out;
+}
+
+} // namespace
+
+template <class FT, int D>
+std::vector<TemplateBoundaryMapping<FT, D>>
+template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed,
+                           const std::function<void(std::size_t, std::size_t)>& on_progress) {
+  std::ostringstream why;
+  if (check_well_formed && !x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  std::vector<TemplateBoundaryMapping<FT, D>> out;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    TemplateBoundaryMapping<FT, D> id;
+    id.to = id.from = InstanceId{i, 0};
+    id.whole_boundary = true;
+    id.inverse = out.size();
+    out.push_back(id);
+  }
+  // Instances and their world boundary facets only: identifying equal world points as AT
+  // (apply_template) does would decide every shared coordinate exactly, for nothing here.
+  const auto ids = x.instance_ids();
+  std::vector<std::vector<PointVec<FT, D>>> facets; // per instance, world coordinates
+  std::vector<std::vector<PointVec<FT, D>>> template_facets;
+  // Boxes are certified enclosures (intervals): filters that never decide a shared coordinate
+  // exactly; the segment intersections decide.
+  std::vector<EnclosingBox<FT, D>> instance_box;
+  std::vector<std::vector<EnclosingBox<FT, D>>> facet_boxes;
+  std::vector<RigidTransformation<FT, D>> inverse; // T^{-1} per instance, once
+  for (const auto& t : x.templates) template_facets.push_back(boundary_facets(t.mesh));
+  for (auto id : ids) {
+    inverse.push_back(x.tf(id).inverse());
+    auto f = template_facets[id.i];
+    PointVec<FT, D> ends;
+    for (auto& s : f)
+      for (auto& p : s) {
+        p = x.tf(id)(p);
+        ends.push_back(p);
+      }
+    instance_box.push_back(enclosure<FT, D>(ends));
+    facet_boxes.emplace_back();
+    for (const auto& s : f) facet_boxes.back().push_back(enclosure<FT, D>(s));
+    facets.push_back(std::move(f));
+  }
+  // interf_geo = bnd ∩ bnd for non-overlapping instances, so two instances are neighbours iff
+  // some two boundary facets meet; this avoids the cell-pair tests of neighbouring_instances.
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;
+  for_each_overlapping_box_pair(instance_box, [&](std::size_t a, std::size_t b) {
+    candidates.emplace_back(a, b);
+    return true;
+  });
+  std::sort(candidates.begin(), candidates.end());
+  std::size_t decided = 0;
+  for (const auto& [a, b] : candidates) {
+    if (on_progress) on_progress(decided++, candidates.size());
+    const auto pieces =
+        geometry_interface_pieces<FT, D>(facets[a], facet_boxes[a], facets[b], facet_boxes[b]);
+    if (pieces.empty()) continue;
+    const auto ia = ids[a], ib = ids[b];
+    TemplateBoundaryMapping<FT, D> ab, ba;
+    ab.to = ia;
+    ab.from = ib;
+    ab.map = x.tf(ia).inverse() * x.tf(ib);
+    ab.domain = pull_back<FT, D>(pieces, facets[b], template_facets[ib.i], inverse[b]);
+    ba.to = ib;
+    ba.from = ia;
+    ba.map = ab.map.inverse(); // = T_b^{-1} ∘ T_a exactly; a transpose, not a product
+    ba.domain = pull_back<FT, D>(pieces, facets[a], template_facets[ia.i], inverse[a]);
+    ab.inverse = out.size() + 1;
+    ba.inverse = out.size();
+    out.push_back(std::move(ab));
+    out.push_back(std::move(ba));
+  }
+  return out;
+}
+
+} // namespace symmesh::core
