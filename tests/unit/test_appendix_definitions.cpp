@@ -5,6 +5,8 @@
 // answer is known by hand, including ones where the answer is "no".
 #include <gtest/gtest.h>
 
+#include "exact_fixtures.h"
+
 #include "symmesh/core/ball.h"
 #include "symmesh/core/bounded_connected.h"
 #include "symmesh/core/closure_interior_boundary.h"
@@ -16,33 +18,9 @@
 
 using namespace symmesh::core;
 using symmesh::Exact;
+using namespace symmesh::test;
 
 namespace {
-
-Point<Exact, 2> p2(Exact x, Exact y) {
-  Point<Exact, 2> p;
-  p[0] = x;
-  p[1] = y;
-  return p;
-}
-Point<Exact, 3> p3(Exact x, Exact y, Exact z) {
-  Point<Exact, 3> p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
-
-template <int D>
-ElementComplex<Exact, D> complex_of(const std::vector<Point<Exact, D>>& pts,
-                                    const std::vector<Simplex>& cells) {
-  ElementComplex<Exact, D> c;
-  c.points = pts;
-  c.elements = cells;
-  auto f = face_completion(c);
-  f.normalize();
-  return f;
-}
 
 /// The unit square split along the diagonal 0–3, plus a dangling edge 3–4 leaving it.
 ElementComplex<Exact, 2> square_with_tail() {

@@ -4,6 +4,8 @@
 // Each on a case that holds and on cases where one condition fails.
 #include <gtest/gtest.h>
 
+#include "exact_fixtures.h"
+
 #include "symmesh/core/geometry_decomposition.h"
 #include "symmesh/core/geometry_of_mesh.h"
 #include "symmesh/core/kernel.h"
@@ -15,33 +17,9 @@
 
 using namespace symmesh::core;
 using symmesh::Exact;
+using namespace symmesh::test;
 
 namespace {
-
-Point<Exact, 2> p2(Exact x, Exact y) {
-  Point<Exact, 2> p;
-  p[0] = x;
-  p[1] = y;
-  return p;
-}
-Point<Exact, 3> p3(Exact x, Exact y, Exact z) {
-  Point<Exact, 3> p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
-
-template <int D>
-ElementComplex<Exact, D> complex_of(const std::vector<Point<Exact, D>>& pts,
-                                    const std::vector<Simplex>& cells) {
-  ElementComplex<Exact, D> c;
-  c.points = pts;
-  c.elements = cells;
-  auto f = face_completion(c);
-  f.normalize();
-  return f;
-}
 
 template <int D>
 MultiRegionMesh<Exact, D> mesh_of(const std::vector<Point<Exact, D>>& pts,

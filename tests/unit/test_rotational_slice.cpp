@@ -5,6 +5,8 @@
 // each also where it must fail (a missing copy, a piece outside the slice, a shifted mirror).
 #include <gtest/gtest.h>
 
+#include "exact_fixtures.h"
+
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/rotational_slice.h"
 
@@ -13,6 +15,7 @@
 
 using namespace symmesh::core;
 using symmesh::Exact;
+using namespace symmesh::test;
 
 namespace {
 
@@ -20,20 +23,6 @@ template <int D>
 using P = Point<Exact, D>;
 template <int D>
 using T = RigidTransformation<Exact, D>;
-
-P<3> p3(Exact x, Exact y, Exact z) {
-  P<3> p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
-P<2> p2(Exact x, Exact y) {
-  P<2> p;
-  p[0] = x;
-  p[1] = y;
-  return p;
-}
 
 /// rot_{c,v,90°} for v = (1, 2, 2): A = [û]× + ûûᵀ with û = v/3.
 T<3> quarter_turn() {

@@ -79,6 +79,17 @@ bool affinely_independent(const std::vector<Point<FT, D>>& p) {
   return rank(m) == p.size() - 1;
 }
 
+/// det(c_1 − c_0, …, c_D − c_0) of D + 1 points: D! times the signed volume of their simplex
+/// (positive when the vertices are ordered counter-clockwise / right-handed), exactly.
+template <class FT, int D>
+FT signed_volume_times_factorial(const std::vector<Point<FT, D>>& c) {
+  Matrix<FT> m(D, std::vector<FT>(D));
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j)
+      m[std::size_t(i)][std::size_t(j)] = c[std::size_t(j + 1)][i] - c[0][i];
+  return determinant(m);
+}
+
 /// Barycentric coordinates of x with respect to the simplex with vertices b, if x ∈ aff(b).
 namespace detail {
 /// (u × w) of plane vectors.

@@ -22,11 +22,7 @@ namespace symmesh::core {
 /// |det(c_1 − c_0, …, c_D − c_0)| of a D-simplex: D! times its volume, exactly.
 template <class FT, int D>
 FT simplex_volume_times_factorial(const std::vector<Point<FT, D>>& c) {
-  Matrix<FT> m(D, std::vector<FT>(D));
-  for (int i = 0; i < D; ++i)
-    for (int j = 0; j < D; ++j)
-      m[std::size_t(i)][std::size_t(j)] = c[std::size_t(j + 1)][i] - c[0][i];
-  const FT d = determinant(m);
+  const FT d = signed_volume_times_factorial<FT, D>(c);
   return d < FT(0) ? -d : d;
 }
 

@@ -9,7 +9,6 @@
 /// conv(S), on the inner side. Orientation signs only.
 #pragma once
 #include "symmesh/core/element_complex.h"
-#include "symmesh/core/linear_algebra.h"
 
 #include <algorithm>
 #include <map>
@@ -24,11 +23,7 @@ namespace detail {
 /// sign of det(q_1 − q_0, …, q_D − q_0) for D + 1 points.
 template <class FT, int D>
 int orientation(const std::vector<Point<FT, D>>& q) {
-  Matrix<FT> m(D, std::vector<FT>(D));
-  for (int i = 0; i < D; ++i)
-    for (int j = 0; j < D; ++j)
-      m[std::size_t(i)][std::size_t(j)] = q[std::size_t(j + 1)][i] - q[0][i];
-  const FT d = determinant(m);
+  const FT d = signed_volume_times_factorial<FT, D>(q);
   return d > FT(0) ? 1 : (d < FT(0) ? -1 : 0);
 }
 
