@@ -1,0 +1,247 @@
+// Algorithm 5.7, certificate stage (internal to templated_tetrahedral_mesh.cpp): the SVB pairs
+// of every template boundary mapping and the Lemma 4.2 certificate of the surface meshes, mapping
+// by mapping (or copy by copy for the symmetric methods), with the place of a failure named —
+// spec/generation.md#alg-5-7, spec/lemmas.md#lemma-4-2-surface-meshes
+#pragma once
+#include "symmesh/gen/surface_meshes_3d.h"
+
+#include "symmesh/core/interface_conformity.h"
+#include "symmesh/gen/rotation_order.h"
+#include "symmesh/mesh/union_find.h"
+
+#include <sstream>
+
+namespace symmesh::gen::surface3 {
+
+/// The (from, to) vertex pairs of one template boundary mapping, from its face-to-face action:
+/// vertices by the automaton, line-mesh points in or against the edge's direction, surface-mesh
+/// points index for index (the surface meshes were carried so, see surface_meshes).
+template <class FT>
+SvbPairs mapping_pairs_3(const core::BoundaryPatchPartition<FT, 3>& bpp, std::size_t letter,
+                         const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  const auto& m = bpp.mappings[letter];
+  const std::size_t j = m.from_template(), i = m.to_template();
+  SvbPairs pairs;
+  support::vertex_and_line_pairs<FT, 3>(bpp, letter, boundaries[j].lines, boundaries[i].lines,
+                                        pairs);
+  for (auto [f, g] : bpp.letter_action[letter]) {
+    if (bpp.subdivisions[j].faces[f].dimension != 2) continue;
+    const std::size_t n = boundaries[j].facet_count[f];
+    if (n != boundaries[i].facet_count[g])
+      throw std::logic_error("Algorithm 5.7: a mapping joins faces of different surface meshes");
+    if (!boundaries[i].facet_symmetric[g]) {
+      for (std::size_t k = 0; k < n; ++k)
+        pairs.emplace_back(mesh::IndexType(boundaries[j].facet_first[f] + k),
+                           mesh::IndexType(boundaries[i].facet_first[g] + k));
+      continue;
+    }
+    // A symmetric face class: the mapping may differ from the carrying composition by a
+    // symmetry of the face, which permutes the interior points; pair them by their exact
+    // images (a point without one stays unpaired, and the certificate then fails).
+    std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>> at;
+    for (std::size_t k = 0; k < n; ++k)
+      at.emplace(boundaries[i].exact[boundaries[i].facet_first[g] + k],
+                 boundaries[i].facet_first[g] + k);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t a = boundaries[j].facet_first[f] + k;
+      if (const auto it = at.find(m.map(boundaries[j].exact[a])); it != at.end())
+        pairs.emplace_back(mesh::IndexType(a), mesh::IndexType(it->second));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+/// Where surface triangle k of template t lies, for an error message: its boundary patch (the
+/// ids of `symmesh bpp` in the whole structure's partition; the symmetric methods partition only
+/// some copies), its subdivision face and a point of it.
+template <class FT>
+std::string boundary_place(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                           const SurfaceBoundary<FT>& tb, std::size_t t, std::size_t k) {
+  if (k >= tb.triangles.size()) return "";
+  const std::size_t f = tb.triangle_face[k];
+  std::string patch = "?";
+  for (std::size_t p = 0; p < bpp.patches.size(); ++p)
+    if (bpp.patches[p].template_index == t &&
+        std::binary_search(bpp.patches[p].faces.begin(), bpp.patches[p].faces.end(), f))
+      patch = std::to_string(p); // the "id" of symmesh bpp
+  std::ostringstream at;
+  at.precision(6);
+  at << ", boundary patch " << patch << ", subdivision face " << f << ", near (";
+  for (int d = 0; d < 3; ++d) {
+    double c = 0;
+    for (std::size_t v : tb.triangles[k]) c += rounded(tb.exact[v][d]) / 3;
+    at << (d ? ", " : "") << c;
+  }
+  return at.str() + ")";
+}
+
+/// Lemma 4.2, exactly, on the templates' boundary complexes (spec/lemmas.md#lemma-4-2-boundary):
+/// the instances' interiors are disjoint (checked before meshing) and TetGen kept every template
+/// boundary as its surface mesh (checked by the adapter), so AT is conforming iff the structure
+/// of the exact surface meshes is (the general checker, condition (i) over all instance pairs).
+template <class FT>
+core::Lemma42Verdict certify_3(const core::TemplatedStructure<FT, 3>& x,
+                               const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  core::TemplatedStructure<FT, 3> b;
+  b.instances = x.instances;
+  for (std::size_t i = 0; i < x.templates.size(); ++i) {
+    core::Template<FT, 3> t{x.templates[i].name, core::TemplateKind::mesh, {}};
+    t.mesh.points = boundaries[i].exact;
+    for (const auto& c : boundaries[i].triangles)
+      for (const auto& e : core::faces(
+               core::Simplex{core::VertexId(c[0]), core::VertexId(c[1]), core::VertexId(c[2])}))
+        t.mesh.elements.push_back(e);
+    t.mesh.normalize();
+    b.templates.push_back(std::move(t));
+  }
+  return core::check_interface_conformity(b, core::apply_template(b));
+}
+
+/// Lemma 4.2 mapping by mapping (spec/lemmas.md#lemma-4-2-surface-meshes): every non-trivial
+/// template boundary mapping sends the boundary mesh of each face of its domain onto the boundary
+/// mesh of the image face, exactly — each vertex, line-mesh point and surface-mesh point onto the
+/// point the SVB identifies it with (exact arithmetic), and each surface triangle onto a surface
+/// triangle (vertex ids). The domain of 𝕋_{a,b} is T_b^-1 of the geometric interface (Def 4.7),
+/// the instances' interiors are disjoint (Eq. 4.2, checked before meshing) and TetGen kept each
+/// template boundary as its surface mesh (checked by the adapter), so this is T_a(IP_{a,b}) =
+/// T_b(IP_{b,a}) for every neighbouring pair, and no element of one instance meets a different
+/// element of the other in its relative interior: AT is conforming. The cost is the boundary
+/// size times the mappings, never instance pairs times their elements.
+template <class FT>
+core::Lemma42Verdict certify_by_mappings(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                         const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  core::Lemma42Verdict v;
+  std::vector<std::map<std::size_t, std::vector<std::array<std::size_t, 3>>>> face_triangles(
+      boundaries.size());
+  for (std::size_t t = 0; t < boundaries.size(); ++t)
+    for (std::size_t k = 0; k < boundaries[t].triangles.size(); ++k) {
+      auto c = boundaries[t].triangles[k];
+      std::sort(c.begin(), c.end());
+      face_triangles[t][boundaries[t].triangle_face[k]].push_back(c);
+    }
+  for (auto& per_template : face_triangles)
+    for (auto& [f, list] : per_template) std::sort(list.begin(), list.end());
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    ++v.pairs_checked;
+    const std::size_t j = m.from_template(), i = m.to_template();
+    const auto pairs = mapping_pairs_3(bpp, l, boundaries);
+    std::map<std::size_t, std::size_t> image;
+    for (auto [a, b] : pairs) {
+      image.emplace(std::size_t(a), std::size_t(b));
+      if (m.map(boundaries[j].exact[std::size_t(a)]) != boundaries[i].exact[std::size_t(b)]) {
+        v.holds = false;
+        v.detail = "the mapping " + m.name() + " does not send boundary vertex " +
+                   std::to_string(a) + " onto the vertex " + std::to_string(b) +
+                   " it is identified with";
+        break;
+      }
+    }
+    for (auto [f, g] : bpp.letter_action[l]) {
+      if (!v.holds || bpp.subdivisions[j].faces[f].dimension != 2) continue;
+      std::vector<std::array<std::size_t, 3>> mapped;
+      for (const auto& c : face_triangles[j][f]) {
+        std::array<std::size_t, 3> d{};
+        for (int k = 0; k < 3; ++k) {
+          const auto it = image.find(c[std::size_t(k)]);
+          d[std::size_t(k)] = it == image.end() ? std::size_t(-1) : it->second;
+        }
+        std::sort(d.begin(), d.end());
+        mapped.push_back(d);
+      }
+      std::sort(mapped.begin(), mapped.end());
+      if (mapped != face_triangles[i][g]) {
+        v.holds = false;
+        v.detail = "the mapping " + m.name() + " does not send the surface mesh of face " +
+                   std::to_string(f) + " onto that of face " + std::to_string(g);
+      }
+    }
+    if (!v.holds) {
+      v.a = m.to;
+      v.b = m.from;
+      v.condition = 2;
+      return v;
+    }
+  }
+  return v;
+}
+
+/// Lemma 4.2 for the reflective methods (spec/generation.md#reflective-3d), exactly: copy 0's
+/// interfaces by its mappings (certify_by_mappings on copy 0's BPP), and every interface of a
+/// copy-0 instance with a copy-m instance (m != 0) shown to be fixed pointwise by S_m (each vertex
+/// of each domain piece, exactly). Then such an interface also lies in the copy-0 instances of
+/// both templates (x = S_m^-1 x), so both sides carry the same surface mesh there (the relative
+/// map is the identity on it); every other pair (k, l) is S_k of the pair (0, S_k^-1 S_l). When a
+/// piece is not fixed (copy 0 is not a strict fundamental domain), the general checker decides.
+template <class FT>
+core::Lemma42Verdict certify_copies(const core::TemplatedStructure<FT, 3>& x,
+                                    const std::vector<core::RigidTransformation<FT, 3>>& copies,
+                                    const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                    const std::vector<SurfaceBoundary<FT>>& boundaries) {
+  auto v = certify_by_mappings(bpp, boundaries);
+  if (!v.holds) return v;
+  for (const auto& m : core::template_boundary_mappings(x, false)) {
+    if (m.whole_boundary || m.from.g != 0 || m.to.g == 0) continue;
+    ++v.pairs_checked;
+    const auto& from = x.tf(m.from);
+    for (const auto& piece : m.domain)
+      for (const auto& p : piece.vertices) {
+        const auto w = from(p);
+        if (copies[m.to.g](w) != w) return certify_3(x, boundaries);
+      }
+  }
+  return v;
+}
+
+/// Section 6.3 in 3D: the BPP of the first two rotated copies shows every interface of
+/// consecutive copies (k, k+1) (rotations of (0, 1)); the method also needs that no two
+/// non-consecutive copies touch (e.g. slices meeting only on the axis), because their interfaces
+/// would be neither partitioned nor certified. Up to the rotation it suffices to decide the
+/// pairs (copy 0, copy j), 2 <= j <= n/2, exactly (geometry_interface_nonempty on the carriers).
+/// Returns the first touching pair as text, or nothing.
+template <class FT>
+std::optional<std::string> non_consecutive_contact(const core::TemplatedStructure<FT, 3>& x,
+                                                   std::size_t n) {
+  if (n < 4) return std::nullopt;
+  // Certified interval boxes of the carriers' cells of copy k of every template filter the
+  // candidates; only copies whose boxes meet copy 0's are decided exactly.
+  const auto cell_boxes = [&](std::size_t k) {
+    std::vector<core::EnclosingBox<FT, 3>> out;
+    for (std::size_t i = 0; i < x.templates.size(); ++i) {
+      const auto& c = x.templates[i].mesh;
+      std::vector<P3<FT>> pts;
+      for (const auto& p : c.points) pts.push_back(x.instances[i][k].transformation(p));
+      for (const auto& e : c.elements)
+        if (e.dim() == 3) out.push_back(core::EnclosingBox<FT, 3>::of(pts, e));
+    }
+    return out;
+  };
+  const auto first = cell_boxes(0);
+  core::TemplatedStructure<FT, 3> y;
+  y.templates = x.templates;
+  y.instances.resize(x.templates.size());
+  for (std::size_t i = 0; i < x.templates.size(); ++i) y.instances[i].push_back(x.instances[i][0]);
+  std::vector<std::size_t> copies;
+  for (std::size_t j = 2; j <= n / 2; ++j) {
+    bool meet = false;
+    for (const auto& b : cell_boxes(j))
+      for (const auto& a : first) meet = meet || a.overlaps(b);
+    if (!meet) continue;
+    copies.push_back(j);
+    for (std::size_t i = 0; i < x.templates.size(); ++i)
+      y.instances[i].push_back(x.instances[i][j]);
+  }
+  if (copies.empty()) return std::nullopt;
+  const auto si = core::apply_template(y);
+  for (std::size_t i = 0; i < x.templates.size(); ++i)
+    for (std::size_t i2 = 0; i2 < x.templates.size(); ++i2)
+      for (std::size_t k = 0; k < copies.size(); ++k)
+        if (core::geometry_interface_nonempty(si, si.index_of({i, 0}), si.index_of({i2, k + 1})))
+          return "T_{" + std::to_string(i + 1) + ",1} and T_{" + std::to_string(i2 + 1) + "," +
+                 std::to_string(copies[k] + 1) + "} touch but are not consecutive rotated copies";
+  return std::nullopt;
+}
+
+} // namespace symmesh::gen::surface3

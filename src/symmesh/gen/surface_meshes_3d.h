@@ -1,0 +1,399 @@
+// Algorithm 5.7, surface stage (internal to templated_tetrahedral_mesh.cpp): uniform line meshes
+// on the boundary subdivision's edges, every face class meshed once in its own plane (conforming
+// to the line meshes; symmetric where a mapping sends the face onto itself) and carried to every
+// related face by the exact template boundary mappings — spec/generation.md#alg-5-7,
+// #symmetric-surface-meshes
+#pragma once
+#include "symmesh/core/boundary_patch_partition.h"
+#include "symmesh/gen/generation_support.h"
+#include "symmesh/gen/pipeline_stages.h"
+#include "symmesh/gen/shared_vertex_bookkeeping.h"
+#include "symmesh/gen/symmetric_surface_mesh.h"
+#include "symmesh/gen/symmetry_copies.h"
+#include "symmesh/gen/triangle_mesher.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace symmesh::gen::surface3 {
+
+using support::Clock;
+using support::exact_from_double;
+using support::FaceLine;
+using support::LazyCyclotomic;
+using support::minor_faults;
+using support::rounded;
+using support::seconds_since;
+using support::SvbPairs;
+using support::Symmetry;
+
+template <class FT>
+using P3 = core::Point<FT, 3>;
+
+using symmetric::cross; // the exact cross product (gen/symmetric_surface_mesh.h)
+
+/// The k-th of the n + 1 points of the uniform line mesh of [a, b], exactly: the value of
+/// core::line_mesh_point, written as one product so that its interval enclosure, which rounded()
+/// reads, is the one the 3D outputs were made with (another expression of the same value may
+/// round to a neighbouring double and change the mesh).
+template <class FT>
+P3<FT> line_point(const P3<FT>& a, const P3<FT>& b, std::size_t k, std::size_t n) {
+  if (k == 0) return a;
+  if (k == n) return b;
+  return a + core::scaled<FT, 3>(b - a, FT(int(k)) / FT(int(n)));
+}
+
+/// Tetrahedra TetGen makes per volume bound (-a) of volume, at the default radius-edge bound:
+/// measured on the rotational slices of data/rotational_slice_3d.json
+/// (spec/generation.md#cell-estimate).
+constexpr double kTetrahedraPerVolumeBound = 2.0;
+
+/// Template t's boundary mesh: every boundary point exactly in local ids (subdivision points,
+/// then the interior points of each line mesh, then those of each surface mesh), the line mesh
+/// of every edge face and the triangles of the surface meshes of the 2-faces. TetGen gets the
+/// points rounded once from their exact values; conformity never depends on the rounding, the
+/// SVB identifies points by index.
+template <class FT>
+struct SurfaceBoundary {
+  std::vector<P3<FT>> exact;
+  std::vector<FaceLine> lines;                       ///< per subdivision face (n = 0: not an edge)
+  std::vector<std::size_t> facet_first, facet_count; ///< per subdivision face: interior points
+  /// per subdivision face: meshed symmetrically, so a mapping may permute its interior points
+  std::vector<bool> facet_symmetric;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::size_t> triangle_face;                      ///< the 2-face each triangle lies in
+  std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>> id_of; ///< vertices and line points
+};
+
+template <class FT>
+SurfaceBoundary<FT> line_meshes_3(const core::BoundarySubdivision<FT, 3>& sd, const FT& h2,
+                                  double h, const std::set<FT>& even_lengths) {
+  SurfaceBoundary<FT> tb;
+  tb.exact = sd.points;
+  for (std::size_t v = 0; v < tb.exact.size(); ++v) tb.id_of.emplace(tb.exact[v], v);
+  tb.lines.resize(sd.faces.size());
+  tb.facet_first.assign(sd.faces.size(), 0);
+  tb.facet_count.assign(sd.faces.size(), 0);
+  tb.facet_symmetric.assign(sd.faces.size(), false);
+  for (std::size_t f = 0; f < sd.faces.size(); ++f) {
+    const auto& face = sd.faces[f];
+    if (face.dimension != 1) continue;
+    FaceLine& line = tb.lines[f];
+    line.a = face.vertices[0];
+    line.b = face.vertices[1];
+    line.n = support::parts_for<FT, 3>(sd.points[line.a], sd.points[line.b], h2, h);
+    if (line.n % 2 == 1 && !even_lengths.empty() &&
+        even_lengths.count(core::dot<FT, 3>(sd.points[line.b] - sd.points[line.a],
+                                            sd.points[line.b] - sd.points[line.a])))
+      ++line.n;
+    line.first = tb.exact.size();
+    for (std::size_t k = 1; k < line.n; ++k) {
+      tb.exact.push_back(line_point<FT>(sd.points[line.a], sd.points[line.b], k, line.n));
+      tb.id_of.emplace(tb.exact.back(), tb.exact.size() - 1);
+    }
+  }
+  return tb;
+}
+
+/// The local ids of the line-mesh points of edge face e, from a to b.
+inline std::vector<std::size_t> line_ids(const FaceLine& line) {
+  std::vector<std::size_t> out{line.a};
+  for (std::size_t k = 1; k < line.n; ++k) out.push_back(line.first + k - 1);
+  out.push_back(line.b);
+  return out;
+}
+
+/// The triangulation of one 2-face in its own plane, conforming to the line meshes of its
+/// closure: boundary points as local ids of the face's template, interior points exactly (they
+/// lie in the face's plane exactly: p0 + s·u + t·v with rational s, t), triangles over
+/// (boundary ids, then interior points).
+template <class FT>
+struct FacetMesh {
+  std::vector<std::size_t> boundary_ids;
+  std::vector<P3<FT>> interior;
+  std::vector<std::array<std::size_t, 3>> triangles; ///< < boundary_ids.size(): boundary
+};
+
+/// An exact orthogonal frame of a face's plane, from its vertices (not its pieces, whose
+/// triangulation need not be canonical): p0 its first vertex, u towards its second, v = n × u in
+/// the plane with n from the first vertex off the line. The mesher works in (x·u/|u|, x·v/|v|),
+/// whose orientation is that of n.
+template <class FT>
+struct FacetFrame {
+  P3<FT> p0, u, v, n;
+  double lu = 0, lv = 0;
+
+  std::array<double, 2> to_plane(const P3<FT>& x) const {
+    const P3<FT> d = x - p0;
+    return {rounded(core::dot<FT, 3>(d, u)) / lu, rounded(core::dot<FT, 3>(d, v)) / lv};
+  }
+  P3<FT> from_plane(const std::array<double, 2>& q) const {
+    const FT s = exact_from_double<FT>(q[0] / lu);
+    const FT t = exact_from_double<FT>(q[1] / lv);
+    return p0 + core::scaled<FT, 3>(u, s) + core::scaled<FT, 3>(v, t);
+  }
+};
+
+template <class FT>
+FacetFrame<FT> facet_frame(const core::BoundarySubdivision<FT, 3>& sd, std::size_t f) {
+  const auto& vs = sd.faces[f].vertices;
+  FacetFrame<FT> fr;
+  fr.p0 = sd.points[vs.at(0)];
+  fr.u = sd.points[vs.at(1)] - fr.p0;
+  fr.n = cross<FT>(fr.u, sd.points[vs.at(2)] - fr.p0);
+  for (std::size_t k = 3; k < vs.size() && fr.n == core::zero_point<FT, 3>(); ++k)
+    fr.n = cross<FT>(fr.u, sd.points[vs[k]] - fr.p0);
+  fr.v = cross<FT>(fr.n, fr.u);
+  fr.lu = std::sqrt(rounded(core::dot<FT, 3>(fr.u, fr.u)));
+  fr.lv = std::sqrt(rounded(core::dot<FT, 3>(fr.v, fr.v)));
+  return fr;
+}
+
+/// The boundary of face f for the 2D mesher: its vertices and line-mesh points (local ids of the
+/// template, in first-seen order) and the line-mesh segments over them.
+template <class FT>
+std::vector<std::array<std::size_t, 2>> facet_boundary(const core::BoundarySubdivision<FT, 3>& sd,
+                                                       const SurfaceBoundary<FT>& tb, std::size_t f,
+                                                       std::vector<std::size_t>& boundary_ids) {
+  std::vector<std::array<std::size_t, 2>> segments;
+  std::map<std::size_t, std::size_t> local; // template boundary id -> input point
+  const auto point = [&](std::size_t id) {
+    auto [it, fresh] = local.emplace(id, boundary_ids.size());
+    if (fresh) boundary_ids.push_back(id);
+    return it->second;
+  };
+  for (std::size_t c : sd.faces[f].closure) {
+    const auto& cf = sd.faces[c];
+    if (cf.dimension == 0) point(cf.vertices[0]);
+    if (cf.dimension != 1) continue;
+    const auto ids = line_ids(tb.lines[c]);
+    for (std::size_t k = 0; k + 1 < ids.size(); ++k)
+      segments.push_back({point(ids[k]), point(ids[k + 1])});
+  }
+  return segments;
+}
+
+template <class FT>
+FacetMesh<FT> mesh_facet(const core::BoundarySubdivision<FT, 3>& sd, const SurfaceBoundary<FT>& tb,
+                         std::size_t f, double size, double min_angle_deg) {
+  FacetMesh<FT> out;
+  BoundaryInput in;
+  in.segments = facet_boundary(sd, tb, f, out.boundary_ids);
+  const auto frame = facet_frame(sd, f);
+  for (std::size_t id : out.boundary_ids) in.points.push_back(frame.to_plane(tb.exact[id]));
+  MeshingParameters p;
+  p.size = size;
+  p.min_angle_deg = min_angle_deg;
+  const auto m = mesh_domain_2(in, p);
+  for (std::size_t k = in.points.size(); k < m.points.size(); ++k)
+    out.interior.push_back(frame.from_plane(m.points[k]));
+  out.triangles = m.triangles;
+  return out;
+}
+
+/// A class of 2-faces under the face-to-face action of the mappings (spec/generation.md#
+/// surface-meshes): its first face, its members with the composition of mappings from the first
+/// face to each along a BFS tree, and the differences between other chains and the tree's
+/// (maps of the first face onto itself that do not fix it: the generators of its group).
+template <class FT>
+struct FaceClass {
+  core::FaceRef first;
+  std::vector<core::FaceRef> members;
+  std::map<core::FaceRef, core::RigidTransformation<FT, 3>> comp;
+  std::vector<core::RigidTransformation<FT, 3>> generators;
+};
+
+template <class FT>
+std::vector<FaceClass<FT>> face_classes(const core::BoundaryPatchPartition<FT, 3>& bpp) {
+  using Map = core::RigidTransformation<FT, 3>;
+  const auto& sds = bpp.subdivisions;
+  std::vector<std::vector<std::vector<std::pair<std::size_t, core::FaceRef>>>> arrows(sds.size());
+  for (std::size_t t = 0; t < sds.size(); ++t) arrows[t].resize(sds[t].faces.size());
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    for (auto [f, g] : bpp.letter_action[l])
+      if (sds[m.from_template()].faces[f].dimension == 2)
+        arrows[m.from_template()][f].push_back({l, core::FaceRef{m.to_template(), g}});
+  }
+  std::vector<FaceClass<FT>> classes;
+  std::vector<std::vector<bool>> done(sds.size());
+  for (std::size_t t = 0; t < sds.size(); ++t) done[t].assign(sds[t].faces.size(), false);
+  for (std::size_t t = 0; t < sds.size(); ++t)
+    for (std::size_t f = 0; f < sds[t].faces.size(); ++f) {
+      if (sds[t].faces[f].dimension != 2 || done[t][f]) continue;
+      FaceClass<FT> c;
+      c.first = {t, f};
+      c.members.push_back(c.first);
+      c.comp.emplace(c.first, Map());
+      done[t][f] = true;
+      for (std::size_t k = 0; k < c.members.size(); ++k) {
+        const auto cur = c.members[k];
+        for (const auto& [l, next] : arrows[cur.t][cur.f]) {
+          if (c.comp.count(next)) continue;
+          c.comp.emplace(next, bpp.mappings[l].map * c.comp.at(cur));
+          done[next.t][next.f] = true;
+          c.members.push_back(next);
+        }
+      }
+      const auto& vs = sds[t].faces[f].vertices;
+      for (const auto& cur : c.members)
+        for (const auto& [l, next] : arrows[cur.t][cur.f]) {
+          const Map d = c.comp.at(next).inverse() * bpp.mappings[l].map * c.comp.at(cur);
+          bool fixes = true;
+          for (std::size_t k = 0; k < vs.size() && fixes; ++k)
+            fixes = d(sds[t].points[vs[k]]) == sds[t].points[vs[k]];
+          if (!fixes) c.generators.push_back(d);
+        }
+      classes.push_back(std::move(c));
+    }
+  return classes;
+}
+
+/// The group of every class's first face (trivial when the class has no generators).
+template <class FT>
+std::vector<symmetric::FaceGroup<FT>> face_groups(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                                  const std::vector<FaceClass<FT>>& classes) {
+  std::vector<symmetric::FaceGroup<FT>> groups;
+  for (const auto& c : classes) {
+    if (c.generators.empty()) {
+      groups.push_back({{core::RigidTransformation<FT, 3>()}, {false}});
+      continue;
+    }
+    const auto& sd = bpp.subdivisions[c.first.t];
+    std::vector<P3<FT>> vertices;
+    for (auto v : sd.faces[c.first.f].vertices) vertices.push_back(sd.points[v]);
+    groups.push_back(symmetric::face_group<FT>(vertices, c.generators));
+  }
+  return groups;
+}
+
+/// Squared lengths of the edges that a reflection of a face group reverses: their line meshes get
+/// an even number of parts, so that the mirror meets the boundary in a line-mesh point (the
+/// edge's midpoint). Equal lengths are equal exactly, so the edges' whole classes agree.
+template <class FT>
+std::set<FT> mirrored_edge_lengths(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                   const std::vector<FaceClass<FT>>& classes,
+                                   const std::vector<symmetric::FaceGroup<FT>>& groups) {
+  std::set<FT> lengths;
+  for (std::size_t k = 0; k < classes.size(); ++k) {
+    if (!groups[k].has_reflections()) continue;
+    const auto& sd = bpp.subdivisions[classes[k].first.t];
+    for (std::size_t c : sd.faces[classes[k].first.f].closure) {
+      if (sd.faces[c].dimension != 1) continue;
+      const P3<FT>& a = sd.points[sd.faces[c].vertices[0]];
+      const P3<FT>& b = sd.points[sd.faces[c].vertices[1]];
+      for (std::size_t e = 0; e < groups[k].order(); ++e)
+        if (groups[k].reflection[e] && groups[k].elements[e](a) == b)
+          lengths.insert(core::dot<FT, 3>(b - a, b - a));
+    }
+  }
+  return lengths;
+}
+
+/// The symmetric mesh of a class's first face (spec/generation.md#symmetric-surface-meshes).
+template <class FT>
+FacetMesh<FT> mesh_symmetric_facet(const core::TemplatedStructure<FT, 3>& x,
+                                   const core::BoundarySubdivision<FT, 3>& sd,
+                                   const SurfaceBoundary<FT>& tb, core::FaceRef face,
+                                   const symmetric::FaceGroup<FT>& group, const FT& h2, double size,
+                                   double min_angle_deg) {
+  FacetMesh<FT> out;
+  const auto segments = facet_boundary(sd, tb, face.f, out.boundary_ids);
+  std::vector<P3<FT>> boundary;
+  for (std::size_t id : out.boundary_ids) boundary.push_back(tb.exact[id]);
+  const auto frame = facet_frame(sd, face.f);
+  MeshingParameters p;
+  p.size = size;
+  p.min_angle_deg = min_angle_deg;
+  const std::string where = "template '" + x.templates[face.t].name + "', boundary face " +
+                            std::to_string(face.f) + " (symmetric under " +
+                            std::to_string(group.order()) + " mappings)";
+  auto m = symmetric::symmetric_facet_mesh<FT>(
+      group, frame.n, boundary, segments, [&](const P3<FT>& q) { return frame.to_plane(q); },
+      [&](const std::array<double, 2>& q) { return frame.from_plane(q); },
+      [&](const P3<FT>& a, const P3<FT>& b) { return support::parts_for<FT, 3>(a, b, h2, size); },
+      p, where);
+  out.interior = std::move(m.interior);
+  out.triangles = std::move(m.triangles);
+  return out;
+}
+
+/// Surface meshes of all 2-faces (spec/generation.md#surface-meshes): each class is meshed once
+/// at its first face — symmetrically under the face's group when other chains of mappings reach
+/// a member than the BFS tree's (spec/generation.md#symmetric-surface-meshes) — and carried to
+/// the other members by the tree's compositions.
+template <class FT>
+void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
+                    const core::BoundaryPatchPartition<FT, 3>& bpp,
+                    const std::vector<FaceClass<FT>>& classes,
+                    const std::vector<symmetric::FaceGroup<FT>>& groups,
+                    std::vector<SurfaceBoundary<FT>>& boundaries, const FT& h2, double size,
+                    double min_angle_deg) {
+  const auto& sds = bpp.subdivisions;
+  for (std::size_t k = 0; k < classes.size(); ++k) {
+    const auto [t, f] = classes[k].first;
+    const auto rep = groups[k].is_trivial()
+                         ? mesh_facet(sds[t], boundaries[t], f, size, min_angle_deg)
+                         : mesh_symmetric_facet(x, sds[t], boundaries[t], classes[k].first,
+                                                groups[k], h2, size, min_angle_deg);
+    for (const auto& g : classes[k].members) {
+      auto& tb = boundaries[g.t];
+      const auto& map = classes[k].comp.at(g);
+      std::vector<std::size_t> ids;
+      for (std::size_t id : rep.boundary_ids) {
+        const auto it = tb.id_of.find(map(boundaries[t].exact[id]));
+        if (it == tb.id_of.end())
+          throw std::logic_error("Algorithm 5.7: a mapped surface-mesh boundary point is not a "
+                                 "line-mesh point of the image face");
+        ids.push_back(it->second);
+      }
+      tb.facet_first[g.f] = tb.exact.size();
+      tb.facet_count[g.f] = rep.interior.size();
+      tb.facet_symmetric[g.f] = !groups[k].is_trivial();
+      for (const auto& q : rep.interior) {
+        ids.push_back(tb.exact.size());
+        tb.exact.push_back(map(q));
+      }
+      for (const auto& c : rep.triangles) {
+        tb.triangles.push_back({ids[c[0]], ids[c[1]], ids[c[2]]});
+        tb.triangle_face.push_back(g.f);
+      }
+    }
+  }
+}
+
+/// GenerationOptions::perturb_one_surface_mesh: the first interior surface-mesh vertex of the first
+/// 2-face that some non-trivial mapping sends onto another face moves 1/16 of the way to a
+/// neighbour (exactly, so it stays in the face's plane and the surface stays a valid
+/// triangulation); its images on the related faces stay where they were.
+template <class FT>
+void perturb_one_surface_mesh(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                              std::vector<SurfaceBoundary<FT>>& boundaries) {
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    auto& tb = boundaries[m.from_template()];
+    for (auto [f, g] : bpp.letter_action[l]) {
+      // A face the mapping sends onto itself (a mirror) carries the moved vertex along.
+      if (tb.facet_count[f] == 0 || (m.from_template() == m.to_template() && f == g)) continue;
+      const std::size_t p = tb.facet_first[f];
+      for (const auto& c : tb.triangles) {
+        const auto* at = std::find(c.begin(), c.end(), p);
+        if (at == c.end()) continue;
+        const std::size_t q = c[std::size_t(at - c.begin() + 1) % 3];
+        tb.exact[p] = tb.exact[p] + core::scaled<FT, 3>(tb.exact[q] - tb.exact[p], FT(1) / FT(16));
+        return;
+      }
+    }
+  }
+  throw std::invalid_argument(
+      "perturb_one_surface_mesh: no face mapped onto another face has interior vertices");
+}
+
+} // namespace symmesh::gen::surface3
