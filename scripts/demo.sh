@@ -83,6 +83,8 @@ JSON
 run "$bin" solve "$out/tsv-16.auto.tmesh" --bc "$out/tsv-16.bc.json" --coefficient 1=2 \
   -o "$out/tsv-16.solution.vtu" --templated "$out/tsv-16.solution.tmesh" \
   --report "$out/tsv-16.solution.report.json" --quiet || exit 1
+# The tutorial (docs/tutorial.md): a hand-written plate from check to solve, and the 8-TSV.
+run bash "$(dirname "$0")/tutorial.sh" "$bin" "$out/tutorial" || exit 1
 run "$bin" lemmas --cases 50 --only Lemma_4_2 --out "$out/counterexamples" | tee "$out/lemmas_4_2.txt"
 echo
 echo "demo: outputs in $out/:"
