@@ -27,9 +27,10 @@ run "$bin" bpp "$ex/plate.json" -o "$out/plate.bpp.svg"
 run "$bin" generate "$ex/plate.json" --size 0.2 --min-angle 25 -o "$work/plate.vtu" \
   --templated "$work/plate.tmesh" --report "$work/plate.report.json" --quiet
 run "$bin" generate "$ex/plate.json" --size 0.2 --min-angle 25 -o "$work/plate.msh" --quiet
-# 4. Pictures of it: cells by instance, and by smallest angle.
+# 4. Pictures of it: cells by instance, by smallest angle, and the boundary patches over them.
 run "$bin" render "$work/plate.tmesh" --color instance -o "$out/plate.instance.svg" --quiet
 run "$bin" render "$work/plate.tmesh" --color quality -o "$out/plate.quality.svg" --quiet
+run "$bin" render "$work/plate.tmesh" --patches "$ex/plate.json" -o "$out/plate.patches.svg" --quiet
 # 5. A solve on the templated mesh (P1 FEM, TCSR + CG), and its picture.
 run "$bin" solve "$work/plate.tmesh" --bc "$ex/plate.bc.json" --coefficient 2=10 \
   -o "$work/plate.u.vtu" --report "$work/plate.u.report.json" --quiet

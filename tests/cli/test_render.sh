@@ -127,4 +127,15 @@ bad "a .json instead of a .tmesh" "$TMP/j.svg" "$TMP/bridge.json" -o "$TMP/j.svg
 bad "--width 5" "$TMP/w.svg" "$TMP/bridge.tmesh" --width 5 -o "$TMP/w.svg"
 echo '{"symmesh": "templated-mesh/1", "dimension": 2' > "$TMP/broken.tmesh"
 bad "malformed .tmesh" "$TMP/b.svg" "$TMP/broken.tmesh" -o "$TMP/b.svg"
+
+# --patches: the boundary patches of the structure the mesh came from, one path per class.
+expect_exit 0 "bridge with --patches" -- "$BIN" render "$TMP/bridge.tmesh" --patches "$TMP/bridge.json" -o "$TMP/bridge.patches.svg" --quiet
+classes=$("$BIN" bpp "$TMP/bridge.json" -o "$TMP/bridge.bpp.json" --quiet 2>/dev/null; /usr/bin/python3 -c "
+import json,sys; b=json.load(open('$TMP/bridge.bpp.json')); print(len({p['class'] for p in b['patches'] if p['dimension'] == 1}))")
+drawn=$(grep -c '<path class="patches"' "$TMP/bridge.patches.svg")
+[ "$drawn" = "$classes" ] && pass "one patch path per facet-patch class ($drawn)" \
+  || fail "patch paths: $drawn, facet-patch classes in bpp: $classes"
+"$BIN" example mosfet -o "$TMP/mosfet.json"
+bad "--patches of another structure" "$TMP/p.svg" "$TMP/bridge.tmesh" --patches "$TMP/mosfet.json" -o "$TMP/p.svg"
+bad "--patches with .vtm" "$TMP/p.vtm" "$TMP/bridge.tmesh" --patches "$TMP/bridge.json" -o "$TMP/p.vtm"
 finish

@@ -1,6 +1,9 @@
-// symmesh render MESH.tmesh -o PICTURE.{svg,png} | OUT.vtm [--color ...] [--width PX] [--quiet]
+// symmesh render MESH.tmesh -o PICTURE.{svg,png} | OUT.vtm [--color ...] [--width PX]
+//   [--patches STRUCTURE.json] [--quiet]
 #include "symmesh/apps/commands.h"
+#include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/io/atomic_file.h"
+#include "symmesh/io/bpp_output.h"
 #include "symmesh/io/mesh_render.h"
 #include "symmesh/io/templated_mesh_file.h"
 #include "symmesh/io/templated_structure_json.h"
@@ -13,7 +16,7 @@
 namespace symmesh::apps {
 namespace {
 struct RenderOptions {
-  std::string mesh, out;
+  std::string mesh, out, patches;
   io::MeshRenderOptions picture;
   bool quiet = false;
 };
@@ -35,7 +38,39 @@ bool options_ok(const RenderOptions& o) {
                 "' (use .svg, .png or .vtm)");
     return false;
   }
+  if (!o.patches.empty() && ext == ".vtm") {
+    print_error("render: --patches draws over a picture (.svg, .png), not into a .vtm");
+    return false;
+  }
   return true;
+}
+
+/// The boundary patches (Algorithm 4.1, exact) of the structure the mesh was generated from.
+/// \pre the structure has the mesh's templates with as many instances each; else
+/// std::invalid_argument naming both counts
+template <class FT>
+io::PatchOverlay overlay_of(const core::TemplatedStructure<FT, 2>& x,
+                            const mesh::TemplatedMeshCompactSvb& t, const std::string& path) {
+  const auto& templates = t.templated.templates;
+  std::size_t instances = 0;
+  for (const auto& list : x.instances) instances += list.size();
+  bool same = x.templates.size() == templates.size();
+  for (std::size_t i = 0; same && i < templates.size(); ++i)
+    same = x.instances[i].size() == templates[i].instance_count();
+  if (!same)
+    throw std::invalid_argument(
+        "--patches " + path + ": its " + std::to_string(x.templates.size()) + " templates and " +
+        std::to_string(instances) + " instances are not the mesh's " +
+        std::to_string(templates.size()) + " and " + std::to_string(t.templated.instance_count()) +
+        " (give the structure the mesh was generated from)");
+  return io::patch_overlay(core::boundary_patch_partition(x));
+}
+
+io::PatchOverlay read_overlay(const std::string& path, const mesh::TemplatedMeshCompactSvb& t) {
+  const auto any = io::read_templated_structure(path);
+  if (const auto* x = std::get_if<io::Structure2>(&any)) return overlay_of(*x, t, path);
+  if (const auto* x = std::get_if<io::CyclotomicStructure2>(&any)) return overlay_of(*x, t, path);
+  throw std::invalid_argument("--patches " + path + ": boundary patches are drawn in 2D only");
 }
 
 /// Writes the picture or the multiblock; returns what was written, for the progress line.
@@ -50,11 +85,16 @@ std::string write_output(const mesh::TemplatedMeshCompactSvb& t, const RenderOpt
   return std::to_string(t.templated.point_dimension) + "D picture";
 }
 
-int run_render(const RenderOptions& o) {
+int run_render(RenderOptions o) {
   if (!options_ok(o)) return bad_input;
   const auto start = std::chrono::steady_clock::now();
   try {
     const auto t = io::read_tmesh(o.mesh);
+    io::PatchOverlay overlay;
+    if (!o.patches.empty()) {
+      overlay = read_overlay(o.patches, t);
+      o.picture.patches = &overlay;
+    }
     const std::string what = write_output(t, o);
     const double s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -87,6 +127,9 @@ void add_render(CLI::App& app, int& exit_code) {
       ->transform(CLI::CheckedTransformer(colours, CLI::ignore_case));
   cmd->add_option("--width", o->picture.width, "pixels of the longer side (100..4000)")
       ->capture_default_str();
+  cmd->add_option("--patches", o->patches,
+                  "2D: draw the boundary patches (Algorithm 4.1) of this templated structure, the "
+                  "one the mesh was generated from, coloured by relation class");
   cmd->add_flag("-q,--quiet", o->quiet, "no progress line on stderr");
   cmd->callback([o, &exit_code] { exit_code = run_render(*o); });
 }

@@ -1,6 +1,7 @@
 // Writers for the boundary patch partition. Exact coordinates are printed as exact strings in the
 // JSON; the SVG and VTU round them to double for display only — nothing is decided from them.
 #include "symmesh/io/bpp_output.h"
+#include "symmesh/io/svg.h"
 
 #include "symmesh/number/cyclotomic_cgal.h"
 
@@ -100,23 +101,6 @@ std::string num(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", x == 0 ? 0.0 : x); // no "-0.000"
   return buf;
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 /// A fixed qualitative palette first (ColorBrewer Set1/Dark2, readable as thick lines on white),
@@ -492,6 +476,32 @@ ojson bpp_json(const core::TemplatedStructure<Cyclotomic, 2>& x, const Cyclotomi
 }
 ojson bpp_json(const core::TemplatedStructure<Cyclotomic, 3>& x, const CyclotomicBpp3& bpp) {
   return bpp_json_impl<Cyclotomic, 3>(x, bpp);
+}
+
+namespace {
+template <class FT>
+PatchOverlay patch_overlay_impl(const Bpp<FT, 2>& bpp) {
+  PatchOverlay out;
+  out.per_template.resize(bpp.subdivisions.size());
+  out.classes = bpp.classes.size();
+  const auto colour = class_colours(bpp);
+  for (std::size_t p = 0; p < bpp.patches.size(); ++p) {
+    const auto& patch = bpp.patches[p];
+    if (patch.dimension != 1) continue;
+    for (const auto& s : bpp.patch_simplices(p))
+      if (s.size() == 2)
+        out.per_template[patch.template_index].push_back(
+            {to_p(s[0]), to_p(s[1]), patch.relation_class, colour[patch.relation_class]});
+  }
+  return out;
+}
+} // namespace
+
+PatchOverlay patch_overlay(const Bpp2& bpp) {
+  return patch_overlay_impl(bpp);
+}
+PatchOverlay patch_overlay(const CyclotomicBpp2& bpp) {
+  return patch_overlay_impl(bpp);
 }
 
 std::string bpp_svg(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp) {

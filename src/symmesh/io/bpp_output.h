@@ -10,6 +10,7 @@
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/structure_report.h"
 #include "symmesh/core/templated_structure.h"
+#include "symmesh/io/mesh_render.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,11 @@ nlohmann::ordered_json bpp_json(const core::TemplatedStructure<Cyclotomic, 3>& x
 /// "P<id> c<class>" labels, dashed curves between directly related patches, a class legend.
 std::string bpp_svg(const core::TemplatedStructure<Exact, 2>& x, const Bpp2& bpp);
 std::string bpp_svg(const core::TemplatedStructure<Cyclotomic, 2>& x, const CyclotomicBpp2& bpp);
+
+/// The facet patches of every template as a picture overlay for `symmesh render --patches`
+/// (io/mesh_render.h), coordinates rounded, colours as in bpp_svg.
+PatchOverlay patch_overlay(const Bpp2& bpp);
+PatchOverlay patch_overlay(const CyclotomicBpp2& bpp);
 
 /// VTK XML UnstructuredGrid (ASCII): every face of the closed boundary subdivision as VTK_VERTEX,
 /// VTK_LINE or VTK_TRIANGLE pieces, templates shifted apart along x; CellData "template"

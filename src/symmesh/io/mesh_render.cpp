@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -296,7 +297,29 @@ void edge_path(std::ostringstream& os, const Frame& f, const At& at,
   os << "\"/>\n";
 }
 
-std::string svg_2d(const At& at, const MeshRenderOptions& o) {
+/// Every template's patch segments carried into each of its instances, one path per class.
+void patch_paths(std::ostringstream& os, const Frame& f, const mesh::TemplatedMesh& t,
+                 const PatchOverlay& overlay) {
+  std::map<std::size_t, std::pair<std::string, std::string>> by_class; // class -> (colour, d)
+  for (std::size_t i = 0; i < t.templates.size(); ++i)
+    for (const auto ti : t.templates[i].transformation_indices) {
+      const auto& tr = t.transformations[std::size_t(ti)];
+      for (const auto& seg : overlay.per_template[i]) {
+        double a[2], b[2];
+        tr.apply(seg.a.data(), a);
+        tr.apply(seg.b.data(), b);
+        const auto p = f.map(a[0], a[1]), q = f.map(b[0], b[1]);
+        auto& [colour, d] = by_class[seg.relation_class];
+        colour = seg.colour;
+        d += "M" + num(p[0]) + " " + num(p[1]) + "L" + num(q[0]) + " " + num(q[1]);
+      }
+    }
+  for (const auto& [cls, cd] : by_class)
+    os << "<path class=\"patches\" data-class=\"" << cls << "\" fill=\"none\" stroke=\"" << cd.first
+       << "\" stroke-width=\"3.2\" stroke-linecap=\"round\" d=\"" << cd.second << "\"/>\n";
+}
+
+std::string svg_2d(const At& at, const mesh::TemplatedMesh& t, const MeshRenderOptions& o) {
   std::vector<std::array<double, 2>> pts;
   for (const auto& p : at.x) pts.push_back({p[0], p[1]});
   const Frame f = fit(pts, o.width);
@@ -318,8 +341,13 @@ std::string svg_2d(const At& at, const MeshRenderOptions& o) {
   classify_edges(at, boundary, interfaces);
   edge_path(os, f, at, interfaces, "interfaces", "#d7301f", 1.6);
   edge_path(os, f, at, boundary, "boundary", "#000000", 2.4);
-  legend(os, at, o.colour, f.height(), w,
-         caption(at, "red: instance interfaces, black: boundary", o.colour));
+  std::string what = "red: instance interfaces, black: boundary";
+  if (o.patches) {
+    patch_paths(os, f, t, *o.patches);
+    what = "thick: boundary patches, a colour per relation class (" +
+           std::to_string(o.patches->classes) + ")";
+  }
+  legend(os, at, o.colour, f.height(), w, caption(at, what, o.colour));
   os << "</svg>\n";
   return os.str();
 }
@@ -513,8 +541,11 @@ std::string mesh_svg(const mesh::TemplatedMeshCompactSvb& t, const MeshRenderOpt
   if (t.templated.point_dimension == 3 && o.colour == CellColour::quality)
     throw std::invalid_argument("--color quality (smallest angle) is 2D only; use --color "
                                 "instance, template or region for a 3D mesh");
+  if (o.patches && (t.templated.point_dimension != 2 ||
+                    o.patches->per_template.size() != t.templated.templates.size()))
+    throw std::invalid_argument("boundary patches are drawn in 2D only, one list per template");
   const At at = collect(t);
-  return at.dim == 2 ? svg_2d(at, o) : svg_3d(at, o);
+  return at.dim == 2 ? svg_2d(at, t.templated, o) : svg_3d(at, o);
 }
 
 void write_png_from_svg(const std::string& svg, const std::string& path) {
