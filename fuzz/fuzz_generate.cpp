@@ -1,0 +1,34 @@
+// libFuzzer harness: `symmesh generate` on small templated geometries (2D and 3D) made from
+// arbitrary bytes — the reader, the method choice, the boundary patch partition, the line and
+// surface meshes, the mesher and the Lemma 4.2 certificate, through the same run as the CLI
+// (api/generate_run.h). The first byte picks the size and the method; the rest is the JSON
+// document. Every outcome must be a certified templated mesh or a refusal with the CLI's
+// bad-input exit code (a one-line message); a certificate failure on generated output, any other
+// exception, a crash or a hang is a finding.
+#include "symmesh/api/generate_run.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 2 || size > 4096) return 0;
+  static const char* const methods[] = {"auto", "bpp", "conventional"};
+  symmesh::api::RunOptions o;
+  o.method = methods[data[0] % 3];
+  o.size = 0.05 * double(1 + (data[0] >> 2) % 8); // 0.05 … 0.4
+  o.min_angle = 20;
+  o.max_cells = 20000; // refuse (exit 2) anything larger: the harness must stay fast
+  const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
+  try {
+    symmesh::api::check_method(o);
+    symmesh::api::check_numbers(o);
+    const auto x = symmesh::api::parse_structure_text(text, "fuzz");
+    const auto r = symmesh::api::run_generation(x, "fuzz", o);
+    (void)r;
+  } catch (const symmesh::api::Refusal& e) {
+    // Generated output that fails its own certificate is a bug, not bad input.
+    if (e.exit_code() != symmesh::api::kBadInput) __builtin_trap();
+  }
+  return 0;
+}
