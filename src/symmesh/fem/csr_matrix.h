@@ -76,7 +76,7 @@ CsrMatrix assemble_csr(std::size_t n, std::size_t cell_count, Cells cells, Eleme
   }
   for (std::size_t r = 0; r < n; ++r) first[r + 1] += first[r];
   std::vector<std::int64_t> fill(first.begin(), first.end() - 1);
-  std::vector<std::uint32_t> cells_of(std::size_t(first[n]));
+  std::vector<std::uint32_t> cells_of(static_cast<std::size_t>(first[n]));
   for (std::size_t c = 0; c < cell_count; ++c) {
     const auto v = cells(c);
     for (int a = 0; a <= D; ++a)
