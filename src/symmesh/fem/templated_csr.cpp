@@ -358,7 +358,7 @@ CsrMatrix TemplatedCsr::to_csr(bool constrained) const {
   }
   for (std::size_t r = 0; r < unknowns; ++r) count[r + 1] += count[r];
   std::vector<std::int64_t> fill(count.begin(), count.end() - 1);
-  std::vector<std::pair<GlobalIndex, double>> entries(std::size_t(count[unknowns]));
+  std::vector<std::pair<GlobalIndex, double>> entries(static_cast<std::size_t>(count[unknowns]));
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const auto& in = instances[i];
     const auto& t = templates[in.template_index];
