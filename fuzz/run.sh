@@ -20,19 +20,32 @@ targets=()
 for h in "${harnesses[@]}"; do targets+=("fuzz_$h"); done
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
 report=docs/fuzzing.md
+# Rows of harnesses not run this time are kept from the last report.
+kept=$(mktemp)
+if [ -f "$report" ]; then
+  grep -E '^\| [a-z_]+ \| [0-9]' "$report" | while read -r row; do
+    name=$(echo "$row" | awk -F'|' '{gsub(/ /, "", $2); print $2}')
+    case " ${harnesses[*]} " in *" $name "*) ;; *) echo "$row" ;; esac
+  done > "$kept"
+fi
 {
   echo "# Fuzzing campaigns"
   echo
-  echo "Written by \`bash fuzz/run.sh $secs ${harnesses[*]}\` on $(date -u +%Y-%m-%d) ($(nproc) cores,"
-  echo "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), clang-14, libFuzzer, ASan + UBSan, the"
-  echo "library instrumented). Harnesses: fuzz/*.cpp; saved inputs: fuzz/corpus/ (replayed by \`make test\`)."
+  echo "Written by \`bash fuzz/run.sh SECONDS [HARNESS...]\` (clang-14, libFuzzer, ASan + UBSan, the library"
+  echo "instrumented; $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')). A row is the"
+  echo "latest campaign of its harness, started from its saved inputs. Harnesses: fuzz/*.cpp; saved"
+  echo "inputs: fuzz/corpus/<harness>/, replayed by \`make test\` (ctest fuzz.replay_*). A finding is"
+  echo "fixed and then saved in the corpus, so that it stays a regression test."
   echo
-  echo "| harness | seconds | executions | coverage (edges) | corpus | findings |"
-  echo "|---|---|---|---|---|---|"
+  echo "| harness | date | seconds | executions | coverage (edges) | corpus | findings |"
+  echo "|---|---|---|---|---|---|---|"
+  cat "$kept"
 } > "$report.part"
+rm -f "$kept"
 for h in "${harnesses[@]}"; do
   work=build-fuzz/$h
   mkdir -p "$work/corpus"
+  rm -f "$work"/crash-* "$work"/timeout-* "$work"/oom-* "$work"/leak-*
   cp fuzz/corpus/"$h"/* "$work/corpus/" 2>/dev/null || true
   log=$work/campaign.log
   set +e
@@ -43,7 +56,19 @@ for h in "${harnesses[@]}"; do
   cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+')
   files=$(ls "$work/corpus" | wc -l)
   findings=$(ls "$work" | grep -cE '^(crash|timeout|oom|leak)-' || true)
-  echo "| $h | $secs | ${runs:-?} | ${cov:-?} | $files | $findings |" >> "$report.part"
+  echo "| $h | $(date -u +%Y-%m-%d) | $secs | ${runs:-?} | ${cov:-?} | $files | $findings |" >> "$report.part"
   echo "fuzz: $h: ${runs:-?} executions, cov ${cov:-?}, $findings findings (log $log)" >&2
 done
+{
+  echo
+  echo "## Findings saved as regression inputs"
+  echo
+  found=0
+  for f in fuzz/corpus/*/crash-* fuzz/corpus/*/timeout-* fuzz/corpus/*/oom-*; do
+    [ -e "$f" ] || continue
+    found=1
+    echo "- \`$f\`"
+  done
+  [ "$found" = 1 ] || echo "none"
+} >> "$report.part"
 mv "$report.part" "$report"

@@ -109,7 +109,8 @@ mesh::TemplatedMeshCompactSvb read_tmesh(const std::string& path) {
   J doc;
   try {
     doc = J::parse(is);
-  } catch (const J::parse_error& e) {
+  } catch (const J::exception& e) {
+    // parse_error, and out_of_range for a number beyond double's range (found by fuzz_tmesh).
     throw InputError(path + ": malformed JSON: " + e.what());
   }
   if (!doc.is_object() || doc.value("symmesh", "") != "templated-mesh/1")
