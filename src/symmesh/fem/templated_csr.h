@@ -141,6 +141,16 @@ assemble_templated_csr(const mesh::TemplatedMeshCompactSvb& t,
                        const std::function<double(mesh::RegionIdType)>& coefficient,
                        const std::function<double(mesh::RegionIdType)>& reaction = nullptr);
 
+/// Where the direct assembly takes a cell's vertex coordinates from (spec/fem.md#tcsr).
+enum class CellCoordinates {
+  /// AT's vertices as written (double): each the rounded image of one instance's template vertex.
+  structure_instance,
+  /// Each cell's vertices as its own instance's transformation of the template's, evaluated in
+  /// long double: AT's cells without the rounding of AT's coordinates, which moves a vertex by
+  /// up to ε|x| and so changes an element matrix by about ε|x|/h times its shape factor.
+  extended_per_cell,
+};
+
 /// The CSR matrix assembled directly on the structure instance (every cell of AT from its own
 /// transformed coordinates, times its region's coefficient), numbered like `numbering` (the
 /// TCSR's global ids), unconstrained: the reference Algorithm 7.1 must reproduce.
@@ -148,7 +158,8 @@ CsrMatrix
 assemble_structure_instance_csr(const mesh::TemplatedMeshCompactSvb& t,
                                 const std::function<double(mesh::RegionIdType)>& coefficient,
                                 const std::function<double(mesh::RegionIdType)>& reaction,
-                                const TemplatedCsr& numbering);
+                                const TemplatedCsr& numbering,
+                                CellCoordinates coordinates = CellCoordinates::structure_instance);
 
 /// Replaces rows and columns of the sorted Dirichlet unknowns by the identity.
 CsrMatrix constrain(const CsrMatrix& a, const std::vector<GlobalIndex>& dirichlet);
