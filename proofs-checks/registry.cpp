@@ -35,6 +35,11 @@ void register_algorithm_6_2(std::vector<Property>&);
 void register_cyclotomic_field(std::vector<Property>&);
 void register_lemma_4_1_cyclotomic(std::vector<Property>&);
 void register_lemma_4_2_cyclotomic(std::vector<Property>&);
+void register_section_5_2_1(std::vector<Property>&);
+void register_section_5_2_2(std::vector<Property>&);
+void register_section_5_2_3(std::vector<Property>&);
+void register_section_5_2_4(std::vector<Property>&);
+void register_technique_5_8(std::vector<Property>&);
 
 const std::vector<Property>& all_properties() {
   static const std::vector<Property> props = [] {
@@ -62,7 +67,12 @@ const std::vector<Property>& all_properties() {
                          register_algorithm_6_2,
                          register_cyclotomic_field,
                          register_lemma_4_1_cyclotomic,
-                         register_lemma_4_2_cyclotomic})
+                         register_lemma_4_2_cyclotomic,
+                         register_section_5_2_1,
+                         register_section_5_2_2,
+                         register_section_5_2_3,
+                         register_section_5_2_4,
+                         register_technique_5_8})
       f(p);
     return p;
   }();
