@@ -25,26 +25,50 @@ bool is_templated_mesh(const Structure<D>& x) {
   return core::check_interface_conformity(x, si).holds && core::structure_instance_conforming(si);
 }
 
-/// The boundary facets of templates that lie in an instance interface: (template, facet) such
-/// that some instance of the template has the facet's image as a face of another instance.
+/// A boundary facet of template i whose image under instance `own` is a face of a cell of
+/// another instance: that cell's vertex off the facet, in AT's coordinates.
 template <int D>
-std::vector<std::pair<std::size_t, core::Simplex>> interface_facets(const Structure<D>& x) {
+struct InterfaceFacet {
+  std::size_t i;
+  core::Simplex facet;
+  core::InstanceId own;
+  gen::Point<D> neighbour_apex;
+};
+
+/// Every template boundary facet that lies in an instance interface, once (its first instance
+/// and neighbouring cell in AT's order).
+template <int D>
+std::vector<InterfaceFacet<D>> interface_neighbours(const Structure<D>& x) {
   const auto si = core::apply_template(x);
-  std::vector<std::pair<std::size_t, core::Simplex>> out;
+  std::vector<InterfaceFacet<D>> out;
   for (std::size_t i = 0; i < x.templates.size(); ++i)
     for (const auto& f : adapt::boundary_facets(x.templates[i].mesh)) {
-      bool shared = false;
-      for (std::size_t k = 0; k < si.ids.size() && !shared; ++k) {
+      bool found = false;
+      for (std::size_t k = 0; k < si.ids.size() && !found; ++k) {
         if (si.ids[k].i != i) continue;
         std::vector<core::VertexId> g;
         for (core::VertexId v : f) g.push_back(si.vertex_map[k][v]);
         const auto image = adapt::simplex_of(g);
-        for (std::size_t l = 0; l < si.ids.size() && !shared; ++l)
-          shared = l != k && std::binary_search(si.instance_elements[l].begin(),
-                                                si.instance_elements[l].end(), image);
+        for (std::size_t l = 0; l < si.ids.size() && !found; ++l) {
+          if (l == k) continue;
+          for (const auto& c : si.instance_elements[l])
+            if (c.dim() == D && image.is_face_of(c)) {
+              out.push_back(
+                  {i, f, si.ids[k], si.at.mesh.points[adapt::opposite_vertices(c, image)[0]]});
+              found = true;
+              break;
+            }
+        }
       }
-      if (shared) out.push_back({i, f});
     }
+  return out;
+}
+
+/// The boundary facets of templates that lie in an instance interface: (template, facet).
+template <int D>
+std::vector<std::pair<std::size_t, core::Simplex>> interface_facets(const Structure<D>& x) {
+  std::vector<std::pair<std::size_t, core::Simplex>> out;
+  for (const auto& n : interface_neighbours<D>(x)) out.push_back({n.i, n.facet});
   return out;
 }
 

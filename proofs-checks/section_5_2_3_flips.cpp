@@ -11,8 +11,6 @@
 #include "proofs-checks/registry.h"
 #include "symmesh/adapt/flips.h"
 
-#include <stdexcept>
-
 namespace symmesh::proofs {
 namespace {
 
@@ -73,40 +71,24 @@ void flip_is_the_flip_at_every_instance(const GeneratedStructure<D>& s) {
 /// is the neighbour's apex in template i's frame. \pre x has an interface facet
 template <int D>
 Structure<D> flip_across_interface(const Structure<D>& x) {
-  const auto facets = interface_facets<D>(x);
+  const auto facets = interface_neighbours<D>(x);
   RC_PRE(!facets.empty());
-  const auto [i, f] = facets[std::size_t(*rc::gen::inRange<int>(0, int(facets.size())))];
-  const auto si = core::apply_template(x);
-  for (std::size_t k = 0; k < si.ids.size(); ++k) {
-    if (si.ids[k].i != i) continue;
-    std::vector<core::VertexId> g;
-    for (core::VertexId v : f) g.push_back(si.vertex_map[k][v]);
-    const auto image = adapt::simplex_of(g);
-    for (std::size_t l = 0; l < si.ids.size(); ++l) {
-      if (l == k) continue;
-      for (const auto& c : si.instance_elements[l]) {
-        if (c.dim() != D || !image.is_face_of(c)) continue;
-        const auto apex = si.at.mesh.points[adapt::opposite_vertices(c, image)[0]];
-        Structure<D> y = x;
-        auto& m = y.templates[i].mesh;
-        const auto b = core::VertexId(m.points.size());
-        m.points.push_back(x.tf(si.ids[k]).inverse()(apex));
-        const auto cell = adapt::co_cells(m, f)[0];
-        const auto a = adapt::opposite_vertices(cell, f)[0];
-        std::vector<core::Simplex> added;
-        for (core::VertexId q : f) {
-          std::vector<core::VertexId> ids{a, b};
-          for (core::VertexId r : f)
-            if (r != q) ids.push_back(r);
-          added.push_back(adapt::simplex_of(ids));
-        }
-        adapt::replace_cells(y, i, {cell}, added);
-        return y;
-      }
-    }
+  const auto& n = facets[std::size_t(*rc::gen::inRange<int>(0, int(facets.size())))];
+  Structure<D> y = x;
+  auto& m = y.templates[n.i].mesh;
+  const auto b = core::VertexId(m.points.size());
+  m.points.push_back(x.tf(n.own).inverse()(n.neighbour_apex));
+  const auto cell = adapt::co_cells(m, n.facet)[0];
+  const auto a = adapt::opposite_vertices(cell, n.facet)[0];
+  std::vector<core::Simplex> added;
+  for (core::VertexId q : n.facet) {
+    std::vector<core::VertexId> ids{a, b};
+    for (core::VertexId r : n.facet)
+      if (r != q) ids.push_back(r);
+    added.push_back(adapt::simplex_of(ids));
   }
-  RC_FAIL("an interface facet without a neighbouring cell");
-  throw std::logic_error("unreachable");
+  adapt::replace_cells(y, n.i, {cell}, added);
+  return y;
 }
 
 template <int D>

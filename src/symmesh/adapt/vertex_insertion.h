@@ -94,15 +94,15 @@ related_boundary_points(const TemplatedStructure<FT, D>& x, std::size_t i, const
       if (f.dim() == D - 1 && core::point_in_simplex<FT, D>(boundary[k].coords(f), q)) return true;
     return false;
   };
-  std::vector<std::pair<std::size_t, Point<FT, D>>> out{{i, p}};
-  std::set<std::pair<std::size_t, Point<FT, D>>,
-           bool (*)(const std::pair<std::size_t, Point<FT, D>>&,
-                    const std::pair<std::size_t, Point<FT, D>>&)>
-      seen([](const std::pair<std::size_t, Point<FT, D>>& a,
-              const std::pair<std::size_t, Point<FT, D>>& b) {
-        if (a.first != b.first) return a.first < b.first;
-        return core::PointLess<FT, D>()(a.second, b.second);
-      });
+  using Placed = std::pair<std::size_t, Point<FT, D>>;
+  struct Less {
+    bool operator()(const Placed& a, const Placed& b) const {
+      if (a.first != b.first) return a.first < b.first;
+      return core::PointLess<FT, D>()(a.second, b.second);
+    }
+  };
+  std::vector<Placed> out{{i, p}};
+  std::set<Placed, Less> seen;
   seen.insert(out[0]);
   for (std::size_t next = 0; next < out.size(); ++next) {
     const auto [j, q] = out[next];
