@@ -19,6 +19,7 @@ void add_example(CLI::App& app, int& exit_code);
 void add_cut(CLI::App& app, int& exit_code);
 void add_solve(CLI::App& app, int& exit_code);
 void add_render(CLI::App& app, int& exit_code);
+void add_adapt(CLI::App& app, int& exit_code);
 
 /// Peak resident set size of this process, in bytes (the reports' peak_rss_bytes).
 std::size_t peak_rss_bytes();

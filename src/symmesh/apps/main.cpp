@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   symmesh::apps::add_cut(app, exit_code);
   symmesh::apps::add_solve(app, exit_code);
   symmesh::apps::add_render(app, exit_code);
+  symmesh::apps::add_adapt(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,775 @@
+// Section 5.2 and Technique 5.8 on a generated templated mesh — spec/adaptation.md#tmesh-adaptation
+#include "symmesh/adapt/templated_mesh_adaptation.h"
+#include "symmesh/mesh/structure_instance.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstring>
+#include <tuple>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <numbers>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace symmesh::adapt {
+namespace {
+using mesh::IndexType;
+using Cell = std::array<IndexType, 4>;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P2 = Kernel::Point_2;
+using P3 = Kernel::Point_3;
+
+/// One template, editable: coordinates, cells (d + 1 vertices each) and vertex-to-cell incidence.
+struct Work {
+  int d = 2;
+  std::vector<double> x;
+  std::vector<Cell> cells;
+  std::vector<std::vector<IndexType>> inc;
+
+  std::size_t vertex_count() const { return x.size() / std::size_t(d); }
+  const double* p(IndexType v) const { return &x[std::size_t(v) * std::size_t(d)]; }
+  int arity() const { return d + 1; }
+  bool has(const Cell& c, IndexType v) const {
+    for (int k = 0; k < arity(); ++k)
+      if (c[std::size_t(k)] == v) return true;
+    return false;
+  }
+  /// The cells that contain every vertex of `verts`.
+  std::vector<IndexType> cells_with(std::initializer_list<IndexType> verts) const {
+    std::vector<IndexType> out;
+    for (IndexType ci : inc[std::size_t(*verts.begin())]) {
+      bool all = true;
+      for (IndexType v : verts) all = all && has(cells[std::size_t(ci)], v);
+      if (all) out.push_back(ci);
+    }
+    return out;
+  }
+  void set_cell(IndexType ci, const Cell& c) {
+    auto& old = cells[std::size_t(ci)];
+    for (int k = 0; k < arity(); ++k) {
+      auto& list = inc[std::size_t(old[std::size_t(k)])];
+      list.erase(std::find(list.begin(), list.end(), ci));
+    }
+    old = c;
+    for (int k = 0; k < arity(); ++k) inc[std::size_t(c[std::size_t(k)])].push_back(ci);
+  }
+  IndexType add_cell(const Cell& c) {
+    cells.push_back(c);
+    const auto ci = IndexType(cells.size() - 1);
+    for (int k = 0; k < arity(); ++k) inc[std::size_t(c[std::size_t(k)])].push_back(ci);
+    return ci;
+  }
+  IndexType add_vertex(const double* q) {
+    x.insert(x.end(), q, q + d);
+    inc.emplace_back();
+    return IndexType(vertex_count() - 1);
+  }
+};
+
+P2 p2(const double* q) {
+  return P2(q[0], q[1]);
+}
+P3 p3(const double* q) {
+  return P3(q[0], q[1], q[2]);
+}
+
+/// Orientation sign of a cell (exact on the doubles), with vertex `moved` read at `at` if given.
+int orientation(const Work& w, const Cell& c, IndexType moved = -1, const double* at = nullptr) {
+  const auto q = [&](int k) {
+    const IndexType v = c[std::size_t(k)];
+    return v == moved ? at : w.p(v);
+  };
+  if (w.d == 2) return int(CGAL::orientation(p2(q(0)), p2(q(1)), p2(q(2))));
+  return int(CGAL::orientation(p3(q(0)), p3(q(1)), p3(q(2)), p3(q(3))));
+}
+
+double angle_between(const double* u, const double* v, int d) {
+  double dot = 0, uu = 0, vv = 0;
+  for (int i = 0; i < d; ++i) dot += u[i] * v[i], uu += u[i] * u[i], vv += v[i] * v[i];
+  const double c = std::clamp(dot / std::sqrt(uu * vv), -1.0, 1.0);
+  return std::acos(c) * 180 / std::numbers::pi;
+}
+
+/// Smallest angle (triangle) or dihedral angle (tetrahedron) in degrees; 0 for a flat cell.
+double cell_quality(const Work& w, const Cell& c, IndexType moved = -1,
+                    const double* at = nullptr) {
+  const auto q = [&](int k) {
+    const IndexType v = c[std::size_t(k)];
+    return v == moved ? at : w.p(v);
+  };
+  double best = 180;
+  if (w.d == 2) {
+    for (int k = 0; k < 3; ++k) {
+      const double *o = q(k), *a = q((k + 1) % 3), *b = q((k + 2) % 3);
+      const double u[2] = {a[0] - o[0], a[1] - o[1]}, v[2] = {b[0] - o[0], b[1] - o[1]};
+      best = std::min(best, angle_between(u, v, 2));
+    }
+    return best;
+  }
+  static constexpr int pairs[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                      {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  for (const auto& e : pairs) {
+    const double *pi = q(e[0]), *pj = q(e[1]), *pk = q(e[2]), *pl = q(e[3]);
+    double t[3], u[3], v[3];
+    double tt = 0;
+    for (int i = 0; i < 3; ++i) t[i] = pj[i] - pi[i], tt += t[i] * t[i];
+    double uk = 0, vl = 0;
+    for (int i = 0; i < 3; ++i) uk += (pk[i] - pi[i]) * t[i], vl += (pl[i] - pi[i]) * t[i];
+    for (int i = 0; i < 3; ++i) {
+      u[i] = pk[i] - pi[i] - uk / tt * t[i];
+      v[i] = pl[i] - pi[i] - vl / tt * t[i];
+    }
+    best = std::min(best, angle_between(u, v, 3));
+  }
+  return best;
+}
+
+/// The facets (d vertices) of a cell.
+std::vector<std::vector<IndexType>> facets_of(const Work& w, const Cell& c) {
+  std::vector<std::vector<IndexType>> out;
+  for (int skip = 0; skip < w.arity(); ++skip) {
+    std::vector<IndexType> f;
+    for (int k = 0; k < w.arity(); ++k)
+      if (k != skip) f.push_back(c[std::size_t(k)]);
+    std::sort(f.begin(), f.end());
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::size_t facet_cell_count(const Work& w, const std::vector<IndexType>& f) {
+  std::size_t n = 0;
+  for (IndexType ci : w.inc[std::size_t(f[0])]) {
+    bool all = true;
+    for (IndexType v : f) all = all && w.has(w.cells[std::size_t(ci)], v);
+    n += all;
+  }
+  return n;
+}
+
+/// Whether edge {a, b} lies on the template boundary (on a facet of exactly one cell).
+bool is_boundary_edge(const Work& w, IndexType a, IndexType b) {
+  const auto around = w.cells_with({a, b});
+  if (w.d == 2) return around.size() == 1;
+  for (IndexType ci : around)
+    for (IndexType v : w.cells[std::size_t(ci)])
+      if (v != a && v != b && facet_cell_count(w, {a, b, v}) == 1) return true;
+  return false;
+}
+
+/// The vertices on some boundary facet.
+std::vector<char> boundary_vertices(const Work& w) {
+  std::vector<char> on(w.vertex_count(), 0);
+  for (const auto& c : w.cells)
+    for (const auto& f : facets_of(w, c))
+      if (facet_cell_count(w, f) == 1)
+        for (IndexType v : f) on[std::size_t(v)] = 1;
+  return on;
+}
+
+/// The templates of a templated mesh, editable, and where each global instance comes from.
+struct Session {
+  mesh::TemplatedMeshCompactSvb& t;
+  std::vector<Work> w;
+  std::vector<std::size_t> template_of, local_of;
+
+  explicit Session(mesh::TemplatedMeshCompactSvb& tm) : t(tm) {
+    const int d = t.templated.point_dimension;
+    if (d != 2 && d != 3) throw std::invalid_argument("adaptation needs a 2D or 3D mesh");
+    const auto want = d == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
+    for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
+      const auto& m = t.templated.templates[i].mesh;
+      Work wk;
+      wk.d = d;
+      wk.x = m.vertex_coords;
+      wk.inc.resize(wk.vertex_count());
+      for (std::size_t c = 0; c < m.cell_count(); ++c) {
+        if (m.cell_types[c] != want)
+          throw std::invalid_argument("templates[" + std::to_string(i) + "].cells[" +
+                                      std::to_string(c) + "]: not a " +
+                                      (d == 2 ? "triangle" : "tetrahedron"));
+        Cell cell{0, 0, 0, 0};
+        std::copy(m.cell(c), m.cell(c) + d + 1, cell.begin());
+        wk.add_cell(cell);
+      }
+      w.push_back(std::move(wk));
+      for (std::size_t k = 0; k < t.templated.templates[i].instance_count(); ++k) {
+        template_of.push_back(i);
+        local_of.push_back(k);
+      }
+    }
+  }
+  const mesh::Transformation& transformation(std::size_t instance) const {
+    const auto& mt = t.templated.templates[template_of[instance]];
+    return t.templated.transformations[std::size_t(mt.transformation_indices[local_of[instance]])];
+  }
+  void store() {
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      auto& m = t.templated.templates[i].mesh;
+      const auto type = w[i].d == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
+      m.vertex_coords = w[i].x;
+      m.cell_types.clear();
+      m.cell_vertex_indices.clear();
+      m.cell_vertex_index_offsets.assign(1, 0);
+      for (const auto& c : w[i].cells) m.add_cell(type, c.data());
+    }
+  }
+};
+
+struct TableIndex {
+  std::unordered_map<IndexType, IndexType> fwd, bwd;
+};
+
+std::vector<TableIndex> index_tables(const mesh::TemplatedMeshCompactSvb& t) {
+  std::vector<TableIndex> out(t.tables.size());
+  for (std::size_t k = 0; k < t.tables.size(); ++k)
+    for (auto [a, b] : t.tables[k].pairs) {
+      out[k].fwd.emplace(a, b);
+      out[k].bwd.emplace(b, a);
+    }
+  return out;
+}
+
+TemplateEdge edge_of(std::size_t t, IndexType a, IndexType b) {
+  return {t, std::min(a, b), std::max(a, b)};
+}
+
+/// The related edge of e across table k in direction `forward`, if it is a boundary edge there.
+bool related_edge(const Session& s, const std::vector<TableIndex>& index, std::size_t k,
+                  bool forward, const TemplateEdge& e, TemplateEdge& out) {
+  const auto& table = s.t.tables[k];
+  if (std::size_t(forward ? table.from_template : table.to_template) != e.t) return false;
+  const auto& map = forward ? index[k].fwd : index[k].bwd;
+  const auto ia = map.find(e.a), ib = map.find(e.b);
+  if (ia == map.end() || ib == map.end()) return false;
+  const auto other = std::size_t(forward ? table.to_template : table.from_template);
+  if (!is_boundary_edge(s.w[other], ia->second, ib->second)) return false;
+  out = edge_of(other, ia->second, ib->second);
+  return true;
+}
+
+/// Splits every cell on edge {a, b} of w at new vertex m (in place: a -> m, then b -> m).
+void split_edge(Work& w, IndexType a, IndexType b, IndexType m) {
+  for (IndexType ci : w.cells_with({a, b})) {
+    Cell first = w.cells[std::size_t(ci)], second = first;
+    std::replace(first.begin(), first.begin() + w.arity(), a, m);
+    std::replace(second.begin(), second.begin() + w.arity(), b, m);
+    w.set_cell(ci, first);
+    w.add_cell(second);
+  }
+}
+
+std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges) {
+  const auto index = index_tables(s.t);
+  std::set<TemplateEdge> closure;
+  std::vector<TemplateEdge> queue;
+  for (const auto& e : edges) {
+    const auto n = edge_of(e.t, e.a, e.b);
+    if (e.t >= s.w.size() || s.w[e.t].cells_with({n.a, n.b}).empty())
+      throw std::invalid_argument("bisect: {" + std::to_string(e.a) + ", " + std::to_string(e.b) +
+                                  "} is no edge of template " + std::to_string(e.t));
+    if (closure.insert(n).second) queue.push_back(n);
+  }
+  while (!queue.empty()) {
+    const auto e = queue.back();
+    queue.pop_back();
+    for (std::size_t k = 0; k < s.t.tables.size(); ++k)
+      for (bool forward : {true, false}) {
+        TemplateEdge r;
+        if (related_edge(s, index, k, forward, e, r) && closure.insert(r).second)
+          queue.push_back(r);
+      }
+  }
+  std::map<TemplateEdge, IndexType> mid;
+  for (const auto& e : closure) {
+    auto& w = s.w[e.t];
+    double q[3];
+    for (int i = 0; i < w.d; ++i) q[i] = 0.5 * (w.p(e.a)[i] + w.p(e.b)[i]);
+    const IndexType m = w.add_vertex(q);
+    split_edge(w, e.a, e.b, m);
+    mid[e] = m;
+  }
+  for (std::size_t k = 0; k < s.t.tables.size(); ++k) {
+    auto& table = s.t.tables[k];
+    for (const auto& e : closure) {
+      if (std::size_t(table.from_template) != e.t) continue;
+      const auto ia = index[k].fwd.find(e.a), ib = index[k].fwd.find(e.b);
+      if (ia == index[k].fwd.end() || ib == index[k].fwd.end()) continue;
+      const auto to = mid.find(edge_of(std::size_t(table.to_template), ia->second, ib->second));
+      if (to != mid.end()) table.pairs.emplace_back(mid[e], to->second);
+    }
+  }
+  return closure.size();
+}
+
+/// Lawson flips in a triangle template; returns the flips.
+std::size_t lawson(Work& w) {
+  std::vector<std::pair<IndexType, IndexType>> stack;
+  for (const auto& c : w.cells)
+    for (int k = 0; k < 3; ++k) stack.emplace_back(c[std::size_t(k)], c[std::size_t((k + 1) % 3)]);
+  std::size_t flips = 0;
+  const std::size_t cap = 64 * (w.cells.size() + 16) * (w.cells.size() + 16);
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    const auto around = w.cells_with({a, b});
+    if (around.size() != 2) continue;
+    const Cell c0 = w.cells[std::size_t(around[0])], c1 = w.cells[std::size_t(around[1])];
+    IndexType c = -1, d = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (c0[std::size_t(k)] != a && c0[std::size_t(k)] != b) c = c0[std::size_t(k)];
+      if (c1[std::size_t(k)] != a && c1[std::size_t(k)] != b) d = c1[std::size_t(k)];
+    }
+    if (CGAL::side_of_oriented_circle(p2(w.p(c0[0])), p2(w.p(c0[1])), p2(w.p(c0[2])), p2(w.p(d))) !=
+        CGAL::ON_POSITIVE_SIDE)
+      continue;
+    Cell n0{c, a, d, 0}, n1{c, d, b, 0};
+    if (orientation(w, n0) < 0) std::swap(n0[1], n0[2]);
+    if (orientation(w, n1) < 0) std::swap(n1[1], n1[2]);
+    if (orientation(w, n0) <= 0 || orientation(w, n1) <= 0) continue; // not strictly convex
+    w.set_cell(around[0], n0);
+    w.set_cell(around[1], n1);
+    if (++flips > cap) throw std::logic_error("Lawson flips did not terminate (a defect)");
+    stack.insert(stack.end(), {{a, c}, {c, b}, {b, d}, {d, a}});
+  }
+  return flips;
+}
+
+/// The vertex of a triangle other than a and b.
+IndexType apex(const Cell& c, IndexType a, IndexType b) {
+  for (int k = 0; k < 3; ++k)
+    if (c[std::size_t(k)] != a && c[std::size_t(k)] != b) return c[std::size_t(k)];
+  return -1;
+}
+
+P2 image(const Session& s, std::size_t instance, IndexType v) {
+  double q[2];
+  s.transformation(instance).apply(s.w[s.template_of[instance]].p(v), q);
+  return P2(q[0], q[1]);
+}
+
+/// Whether the cell of instance i on edge {a, b} has instance j's apex strictly inside its
+/// circumcircle, in AT's coordinates.
+bool encroached(const Session& s, std::size_t i, IndexType a, IndexType b, std::size_t j,
+                IndexType ja, IndexType jb) {
+  const auto& wi = s.w[s.template_of[i]];
+  const auto& wj = s.w[s.template_of[j]];
+  const auto ci = wi.cells_with({a, b}), cj = wj.cells_with({ja, jb});
+  if (ci.size() != 1 || cj.size() != 1) return false;
+  const IndexType c = apex(wi.cells[std::size_t(ci[0])], a, b);
+  const IndexType cc = apex(wj.cells[std::size_t(cj[0])], ja, jb);
+  return CGAL::side_of_bounded_circle(image(s, i, a), image(s, i, b), image(s, i, c),
+                                      image(s, j, cc)) == CGAL::ON_BOUNDED_SIDE;
+}
+
+std::vector<TemplateEdge> non_tald(const Session& s) {
+  const auto index = index_tables(s.t);
+  std::set<TemplateEdge> bad;
+  for (const auto& id : s.t.identifications) {
+    const auto i = std::size_t(id.from_instance), j = std::size_t(id.to_instance);
+    const auto& fwd = index[std::size_t(id.table)].fwd;
+    const auto& wi = s.w[s.template_of[i]];
+    for (const auto& c : wi.cells)
+      for (int k = 0; k < 3; ++k) {
+        const IndexType a = c[std::size_t(k)], b = c[std::size_t((k + 1) % 3)];
+        const auto ia = fwd.find(a), ib = fwd.find(b);
+        if (ia == fwd.end() || ib == fwd.end()) continue;
+        if (!is_boundary_edge(wi, a, b) ||
+            !is_boundary_edge(s.w[s.template_of[j]], ia->second, ib->second))
+          continue;
+        if (encroached(s, i, a, b, j, ia->second, ib->second) ||
+            encroached(s, j, ia->second, ib->second, i, a, b))
+          bad.insert(edge_of(s.template_of[i], a, b));
+      }
+  }
+  return {bad.begin(), bad.end()};
+}
+
+std::size_t smooth(Session& s, std::size_t iterations, bool improve_only) {
+  std::size_t moves = 0;
+  for (auto& w : s.w) {
+    const auto fixed = boundary_vertices(w);
+    for (std::size_t it = 0; it < iterations; ++it)
+      for (IndexType v = 0; v < IndexType(w.vertex_count()); ++v) {
+        if (fixed[std::size_t(v)] || w.inc[std::size_t(v)].empty()) continue;
+        std::set<IndexType> around;
+        for (IndexType ci : w.inc[std::size_t(v)])
+          for (int k = 0; k < w.arity(); ++k)
+            around.insert(w.cells[std::size_t(ci)][std::size_t(k)]);
+        around.erase(v);
+        double q[3] = {0, 0, 0};
+        for (IndexType u : around)
+          for (int i = 0; i < w.d; ++i) q[i] += w.p(u)[i] / double(around.size());
+        bool valid = true;
+        double before = 180, after = 180;
+        for (IndexType ci : w.inc[std::size_t(v)]) {
+          const auto& c = w.cells[std::size_t(ci)];
+          valid = valid && orientation(w, c, v, q) > 0;
+          if (improve_only) {
+            before = std::min(before, cell_quality(w, c));
+            after = std::min(after, cell_quality(w, c, v, q));
+          }
+        }
+        if (!valid || (improve_only && !(after > before))) continue;
+        bool same = true;
+        for (int i = 0; i < w.d; ++i) same = same && q[i] == w.p(v)[i];
+        if (same) continue;
+        std::copy(q, q + w.d, &w.x[std::size_t(v) * std::size_t(w.d)]);
+        ++moves;
+      }
+  }
+  return moves;
+}
+
+double longest_edge(const Work& w, const Cell& c, IndexType& a, IndexType& b) {
+  double best = -1;
+  for (int i = 0; i < w.arity(); ++i)
+    for (int j = i + 1; j < w.arity(); ++j) {
+      const IndexType u = std::min(c[std::size_t(i)], c[std::size_t(j)]);
+      const IndexType v = std::max(c[std::size_t(i)], c[std::size_t(j)]);
+      double l = 0;
+      for (int k = 0; k < w.d; ++k) l += (w.p(u)[k] - w.p(v)[k]) * (w.p(u)[k] - w.p(v)[k]);
+      if (l > best || (l == best && std::make_pair(u, v) < std::make_pair(a, b))) {
+        best = l;
+        a = u;
+        b = v;
+      }
+    }
+  return std::sqrt(best);
+}
+
+// --- the --refine-where expression ---
+struct Term {
+  std::string name, op;
+  double value = 0;
+};
+
+double field(const CellView& c, const std::string& name) {
+  if (name == "x") return c.centroid[0];
+  if (name == "y") return c.centroid[1];
+  if (name == "z") return c.centroid[2];
+  if (name == "size") return c.size;
+  if (name == "quality") return c.quality;
+  if (name == "region") return double(c.region);
+  if (name == "template") return double(c.template_index);
+  return double(c.instance);
+}
+
+bool compare(double l, const std::string& op, double r) {
+  if (op == "<") return l < r;
+  if (op == "<=") return l <= r;
+  if (op == ">") return l > r;
+  if (op == ">=") return l >= r;
+  if (op == "==") return l == r;
+  return l != r;
+}
+} // namespace
+
+std::size_t expand_identifications(mesh::TemplatedMeshCompactSvb& t) {
+  Session s(t);
+  std::vector<std::vector<TemplateEdge>> edges(s.w.size());
+  std::vector<std::vector<char>> on(s.w.size());
+  for (std::size_t i = 0; i < s.w.size(); ++i) {
+    on[i] = boundary_vertices(s.w[i]);
+    std::set<TemplateEdge> e;
+    for (const auto& c : s.w[i].cells)
+      for (int p = 0; p < s.w[i].arity(); ++p)
+        for (int q = p + 1; q < s.w[i].arity(); ++q) {
+          const auto a = c[std::size_t(p)], b = c[std::size_t(q)];
+          if (on[i][std::size_t(a)] && on[i][std::size_t(b)] && is_boundary_edge(s.w[i], a, b))
+            e.insert(edge_of(i, a, b));
+        }
+    edges[i].assign(e.begin(), e.end());
+  }
+  std::map<std::pair<IndexType, IndexType>, std::vector<std::size_t>> sharing;
+  std::vector<std::unordered_map<IndexType, IndexType>> at_to_vertex(s.template_of.size());
+  const mesh::StructureInstance at(t);
+  at.for_each_instance([&](const mesh::StructureInstance::Instance& inst) {
+    const auto& g = *inst.global;
+    for (const auto& e : edges[inst.template_index])
+      sharing[{std::min(g[std::size_t(e.a)], g[std::size_t(e.b)]),
+               std::max(g[std::size_t(e.a)], g[std::size_t(e.b)])}]
+          .push_back(inst.index);
+    for (std::size_t v = 0; v < g.size(); ++v)
+      if (on[inst.template_index][v]) at_to_vertex[inst.index].emplace(g[v], IndexType(v));
+  });
+  std::set<std::pair<std::size_t, std::size_t>> direct;
+  for (const auto& id : t.identifications)
+    direct.insert(std::minmax(std::size_t(id.from_instance), std::size_t(id.to_instance)));
+  using Key = std::tuple<IndexType, IndexType, std::vector<std::pair<IndexType, IndexType>>>;
+  std::map<Key, IndexType> tables;
+  for (std::size_t k = 0; k < t.tables.size(); ++k)
+    tables.emplace(Key{t.tables[k].from_template, t.tables[k].to_template, t.tables[k].pairs},
+                   IndexType(k));
+  std::size_t added = 0;
+  for (const auto& [edge, list] : sharing)
+    for (std::size_t p = 0; p < list.size(); ++p)
+      for (std::size_t q = p + 1; q < list.size(); ++q) {
+        const auto [i, j] = std::minmax(list[p], list[q]);
+        if (i == j || !direct.insert({i, j}).second) continue;
+        std::vector<std::pair<IndexType, IndexType>> pairs;
+        for (const auto& [g, v] : at_to_vertex[i]) {
+          const auto it = at_to_vertex[j].find(g);
+          if (it != at_to_vertex[j].end()) pairs.emplace_back(v, it->second);
+        }
+        std::sort(pairs.begin(), pairs.end());
+        Key key{IndexType(s.template_of[i]), IndexType(s.template_of[j]), pairs};
+        auto found = tables.find(key);
+        if (found == tables.end()) {
+          t.tables.push_back({IndexType(s.template_of[i]), IndexType(s.template_of[j]), pairs});
+          found = tables.emplace(key, IndexType(t.tables.size() - 1)).first;
+        }
+        t.identifications.push_back({IndexType(i), IndexType(j), found->second});
+        ++added;
+      }
+  return added;
+}
+
+std::size_t bisect_edges(mesh::TemplatedMeshCompactSvb& t, const std::vector<TemplateEdge>& edges) {
+  Session s(t);
+  const auto n = bisect(s, edges);
+  s.store();
+  return n;
+}
+
+std::size_t make_templates_delaunay(mesh::TemplatedMeshCompactSvb& t) {
+  Session s(t);
+  if (s.w.empty() || s.w[0].d != 2) throw std::invalid_argument("Delaunay flips are planar only");
+  std::size_t flips = 0;
+  for (auto& w : s.w) flips += lawson(w);
+  s.store();
+  return flips;
+}
+
+std::vector<TemplateEdge> non_tald_edges(const mesh::TemplatedMeshCompactSvb& t) {
+  auto copy = t;
+  Session s(copy);
+  return non_tald(s);
+}
+
+DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
+                             mesh::Progress* progress) {
+  Session s(t);
+  if (s.w.empty() || s.w[0].d != 2)
+    throw std::invalid_argument("--delaunay (Technique 5.8) is planar only");
+  if (progress) progress->stage("Technique 5.8", max_rounds, "rounds");
+  DelaunayReport r;
+  for (;;) {
+    for (auto& w : s.w) r.flips += lawson(w);
+    const auto bad = non_tald(s);
+    if (bad.empty()) break;
+    if (r.rounds == max_rounds) {
+      const auto& e = bad.front();
+      throw AdaptationLimit("Technique 5.8: after " + std::to_string(max_rounds) +
+                            " rounds of boundary insertions, template " + std::to_string(e.t) +
+                            " edge {" + std::to_string(e.a) + ", " + std::to_string(e.b) +
+                            "} (and " + std::to_string(bad.size() - 1) +
+                            " more) is still not template-aware locally Delaunay (ping-pong "
+                            "encroachment, Figure 5.17; raise --max-rounds)");
+    }
+    r.bisections += bisect(s, bad);
+    ++r.rounds;
+    if (progress) progress->set_done(r.rounds);
+  }
+  s.store();
+  return r;
+}
+
+std::size_t smooth_interior_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
+                                     bool improve_only) {
+  Session s(t);
+  const auto moves = smooth(s, iterations, improve_only);
+  s.store();
+  return moves;
+}
+
+CellPredicate parse_cell_predicate(const std::string& expression) {
+  std::vector<Term> terms;
+  std::size_t i = 0;
+  const auto skip = [&] {
+    while (i < expression.size() && std::isspace(static_cast<unsigned char>(expression[i]))) ++i;
+  };
+  const auto fail = [&](const std::string& what) {
+    throw std::invalid_argument("--refine-where \"" + expression + "\": " + what + " at column " +
+                                std::to_string(i + 1));
+  };
+  static const std::set<std::string> names{"x",       "y",      "z",        "size",
+                                           "quality", "region", "template", "instance"};
+  for (;;) {
+    skip();
+    Term term;
+    while (i < expression.size() &&
+           (std::isalpha(static_cast<unsigned char>(expression[i])) || expression[i] == '_'))
+      term.name += expression[i++];
+    if (!names.count(term.name))
+      fail(term.name.empty()
+               ? std::string("expected a name (x y z size quality region template "
+                             "instance)")
+               : "unknown name '" + term.name + "' (x y z size quality region template instance)");
+    skip();
+    for (const char* op : {"<=", ">=", "==", "!=", "<", ">"})
+      if (expression.compare(i, std::strlen(op), op) == 0) {
+        term.op = op;
+        i += term.op.size();
+        break;
+      }
+    if (term.op.empty()) fail("expected one of < <= > >= == !=");
+    skip();
+    const char* start = expression.c_str() + i;
+    char* end = nullptr;
+    term.value = std::strtod(start, &end);
+    if (end == start || !std::isfinite(term.value)) fail("expected a finite number");
+    i += std::size_t(end - start);
+    terms.push_back(term);
+    skip();
+    if (i == expression.size()) break;
+    if (expression.compare(i, 3, "and") == 0)
+      i += 3;
+    else if (expression.compare(i, 2, "&&") == 0)
+      i += 2;
+    else
+      fail("expected 'and' or the end");
+  }
+  return [terms](const CellView& c) {
+    for (const auto& term : terms)
+      if (!compare(field(c, term.name), term.op, term.value)) return false;
+    return true;
+  };
+}
+
+std::size_t refine_where(mesh::TemplatedMeshCompactSvb& t, const CellPredicate& where) {
+  Session s(t);
+  std::set<TemplateEdge> marked;
+  std::size_t first = 0;
+  for (std::size_t ti = 0; ti < s.w.size(); ++ti) {
+    const auto& w = s.w[ti];
+    const auto& mt = t.templated.templates[ti];
+    for (const auto& c : w.cells) {
+      CellView view;
+      IndexType a = -1, b = -1;
+      view.size = longest_edge(w, c, a, b);
+      view.quality = cell_quality(w, c);
+      view.template_index = ti;
+      double centroid[3] = {0, 0, 0};
+      for (int k = 0; k < w.arity(); ++k)
+        for (int d = 0; d < w.d; ++d) centroid[d] += w.p(c[std::size_t(k)])[d] / w.arity();
+      for (std::size_t k = 0; k < mt.instance_count(); ++k) {
+        view.instance = first + k;
+        view.region = mt.region_ids[k];
+        s.transformation(first + k).apply(centroid, view.centroid);
+        if (where(view)) {
+          marked.insert({ti, a, b});
+          break;
+        }
+      }
+    }
+    first += mt.instance_count();
+  }
+  const auto n = marked.empty() ? 0 : bisect(s, {marked.begin(), marked.end()});
+  s.store();
+  return n;
+}
+
+ImproveReport improve_quality(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds) {
+  Session s(t);
+  ImproveReport r;
+  while (r.rounds < max_rounds) {
+    const auto moves = smooth(s, 1, true);
+    std::size_t flips = 0;
+    if (s.w.empty() || s.w[0].d == 2)
+      for (auto& w : s.w) flips += lawson(w);
+    ++r.rounds;
+    r.moves += moves;
+    r.flips += flips;
+    if (moves + flips == 0) break;
+  }
+  s.store();
+  return r;
+}
+
+double smallest_quality(const mesh::TemplatedMeshCompactSvb& t) {
+  auto copy = t;
+  Session s(copy);
+  double best = 180;
+  for (const auto& w : s.w)
+    for (const auto& c : w.cells) best = std::min(best, cell_quality(w, c));
+  return best;
+}
+
+ConformityCertificate certify_conformity(const mesh::TemplatedMeshCompactSvb& t,
+                                         double expected_boundary) {
+  auto copy = t;
+  Session s(copy);
+  ConformityCertificate r;
+  const auto fail = [&](const std::string& why) {
+    r.holds = false;
+    if (r.why.empty()) r.why = why;
+  };
+  std::vector<std::vector<std::vector<IndexType>>> bnd(s.w.size());
+  for (std::size_t i = 0; i < s.w.size(); ++i) {
+    std::map<std::vector<IndexType>, std::size_t> count;
+    for (std::size_t c = 0; c < s.w[i].cells.size(); ++c) {
+      if (orientation(s.w[i], s.w[i].cells[c]) <= 0)
+        fail("templates[" + std::to_string(i) + "].cells[" + std::to_string(c) +
+             "] is not positively oriented");
+      for (const auto& f : facets_of(s.w[i], s.w[i].cells[c])) ++count[f];
+    }
+    for (const auto& [f, n] : count) {
+      if (n > 2)
+        fail("a facet of template " + std::to_string(i) + " lies in " + std::to_string(n) +
+             " cells");
+      if (n == 1) bnd[i].push_back(f);
+    }
+  }
+  struct Seen {
+    std::size_t count = 0, instance = 0;
+    std::vector<IndexType> facet;
+  };
+  std::map<std::vector<IndexType>, Seen> at_facets;
+  const mesh::StructureInstance at(t);
+  at.for_each_instance([&](const mesh::StructureInstance::Instance& inst) {
+    r.cells += s.w[inst.template_index].cells.size();
+    for (const auto& f : bnd[inst.template_index]) {
+      std::vector<IndexType> key;
+      for (IndexType v : f) key.push_back((*inst.global)[std::size_t(v)]);
+      std::sort(key.begin(), key.end());
+      auto& seen = at_facets[key];
+      if (++seen.count == 1) {
+        seen.instance = inst.index;
+        seen.facet = f;
+      }
+    }
+  });
+  for (const auto& [key, seen] : at_facets) {
+    if (seen.count > 2) fail("a facet of AT lies in " + std::to_string(seen.count) + " instances");
+    if (seen.count != 1) continue;
+    ++r.boundary_facets;
+    const auto& w = s.w[s.template_of[seen.instance]];
+    double q[3][3] = {};
+    for (std::size_t k = 0; k < seen.facet.size(); ++k)
+      s.transformation(seen.instance).apply(w.p(seen.facet[k]), q[k]);
+    if (w.d == 2) {
+      r.boundary_measure += std::hypot(q[1][0] - q[0][0], q[1][1] - q[0][1]);
+    } else {
+      double u[3], v[3];
+      for (int i = 0; i < 3; ++i) u[i] = q[1][i] - q[0][i], v[i] = q[2][i] - q[0][i];
+      r.boundary_measure += 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) +
+                                            std::pow(u[2] * v[0] - u[0] * v[2], 2) +
+                                            std::pow(u[0] * v[1] - u[1] * v[0], 2));
+    }
+  }
+  // The measure is a sum of rounded terms; a hanging vertex doubles a whole interface's share.
+  if (expected_boundary >= 0 &&
+      std::abs(r.boundary_measure - expected_boundary) > 1e-9 * std::max(1.0, expected_boundary))
+    fail("AT's boundary measures " + std::to_string(r.boundary_measure) + ", not " +
+         std::to_string(expected_boundary) + " (an interface does not conform)");
+  return r;
+}
+
+} // namespace symmesh::adapt

@@ -1,0 +1,131 @@
+/// Section 5.2 and Technique 5.8 on a generated templated mesh (.tmesh) —
+/// spec/adaptation.md#tmesh-adaptation
+///
+/// The exact operations of this folder act on core::TemplatedStructure, whose structure instance
+/// identifies equal points. A generated mesh has double coordinates and identifies vertices by
+/// its compact SVB instead (mesh/templated_mesh.h), so these operations keep the SVB in step: a
+/// vertex put on a template boundary edge is put on every related edge — the edges the
+/// identification tables map it to, closed under the tables — and identified with its copies
+/// there (Section 5.2.4). Everything else happens inside one template at a time, so every
+/// instance of it changes alike and the mesh stays templated (Definition 4.4) by construction.
+/// Decisions are exact predicates on the double coordinates (CGAL's filtered predicates):
+/// template-local tests in template coordinates, interface tests (Definition 4.10) on the
+/// instances' images. No distance is compared with a tolerance.
+#pragma once
+#include "symmesh/mesh/progress.h"
+#include "symmesh/mesh/templated_mesh.h"
+
+#include <compare>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace symmesh::adapt {
+
+/// Edge {a, b} (a < b) of template `t`.
+struct TemplateEdge {
+  std::size_t t = 0;
+  mesh::IndexType a = 0, b = 0;
+  auto operator<=>(const TemplateEdge&) const = default;
+};
+
+/// An adaptation that could not reach its goal within its bounds (the CLI's exit 1).
+class AdaptationLimit : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Gives every instance pair that shares a template boundary edge a direct identification. The
+/// generator keeps only a spanning set of pairs (an edge of I and J may be identified through a
+/// third instance K that contains its end points but not the edge); bisection finds related
+/// edges through direct pairs only. Returns the number of pairs added.
+/// \pre t.is_valid()
+std::size_t expand_identifications(mesh::TemplatedMeshCompactSvb& t);
+
+/// Bisects every given template edge at its midpoint and, closed under the identification
+/// tables, every related template boundary edge; each new vertex is identified with its copies.
+/// Every cell on a bisected edge is split in two (in place, so orientation is kept). Returns the
+/// number of template edges bisected.
+/// \pre expand_identifications(t) was applied; every edge is an edge of its template
+std::size_t bisect_edges(mesh::TemplatedMeshCompactSvb& t, const std::vector<TemplateEdge>& edges);
+
+/// 2D: Lawson flips of template-interior edges until every template-interior edge is locally
+/// Delaunay (Section 5.2.3: template boundary edges are never flipped). Returns the flip count.
+/// \pre t.templated.point_dimension == 2
+std::size_t make_templates_delaunay(mesh::TemplatedMeshCompactSvb& t);
+
+/// 2D: the instance-interface edges that are not template-aware locally Delaunay (Definition
+/// 4.10): the apex across the interface, in AT's coordinates, lies strictly inside the
+/// circumcircle of the edge's cell. Each edge once, as an edge of the from-template.
+/// \pre t.templated.point_dimension == 2
+std::vector<TemplateEdge> non_tald_edges(const mesh::TemplatedMeshCompactSvb& t);
+
+struct DelaunayReport {
+  std::size_t rounds = 0, flips = 0, bisections = 0;
+};
+
+/// Technique 5.8 in the plane: Lawson flips in every template, then, while some interface edge
+/// is not template-aware locally Delaunay, its midpoint is inserted at every related edge and the
+/// templates are flipped again. Then every interior edge of AT is locally Delaunay, so AT is a
+/// constrained Delaunay triangulation of its domain (Delaunay when the domain is convex,
+/// Lemma 4.5). Throws AdaptationLimit naming an offending edge after `max_rounds` rounds
+/// (ping-pong encroachment, Figure 5.17; protection balls are not implemented).
+/// \pre t.templated.point_dimension == 2, expand_identifications(t) was applied
+DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
+                             mesh::Progress* progress = nullptr);
+
+/// Section 5.2.2, template-interior vertices (on no template boundary facet): each moves to the
+/// mean of its neighbours when every cell around it stays positively oriented (exact), and, with
+/// `improve_only`, when the smallest quality of those cells grows. Returns the moves made over
+/// `iterations` Gauss–Seidel sweeps.
+std::size_t smooth_interior_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
+                                     bool improve_only);
+
+/// One instance image of a template cell, as --refine-where sees it.
+struct CellView {
+  double centroid[3] = {0, 0, 0}; ///< in AT's coordinates
+  double size = 0;                ///< longest edge
+  double quality = 0;             ///< smallest angle (2D) or dihedral angle (3D), degrees
+  std::size_t template_index = 0, instance = 0;
+  mesh::RegionIdType region = 0;
+};
+using CellPredicate = std::function<bool(const CellView&)>;
+
+/// Parses "TERM [and TERM]…", TERM = "NAME OP NUMBER", NAME one of x y z size quality region
+/// template instance, OP one of < <= > >= == !=. Throws std::invalid_argument naming the token.
+CellPredicate parse_cell_predicate(const std::string& expression);
+
+/// Section 5.2.4 refinement: the longest edge of every template cell with an instance image that
+/// satisfies `where` is bisected (with its related edges). Returns the edges bisected.
+/// \pre expand_identifications(t) was applied
+std::size_t refine_where(mesh::TemplatedMeshCompactSvb& t, const CellPredicate& where);
+
+struct ImproveReport {
+  std::size_t rounds = 0, moves = 0, flips = 0;
+};
+
+/// Section 5.2.6: rounds of quality-improving smoothing of template-interior vertices and (2D)
+/// Delaunay flips inside templates, until a round changes nothing or `max_rounds` is reached.
+ImproveReport improve_quality(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds);
+
+/// The smallest cell quality of AT (it is a template's: rigid maps keep angles): smallest angle
+/// in 2D, smallest dihedral angle in 3D, degrees.
+double smallest_quality(const mesh::TemplatedMeshCompactSvb& t);
+
+/// A combinatorial certificate that AT conforms: every template cell is positively oriented
+/// (exact), no facet of AT (vertices numbered through the SVB) lies in more than two cells, and
+/// the measure of AT's boundary facets is `expected_boundary` (a vertex hanging on an interface
+/// leaves the interface's facets on the boundary of both sides).
+struct ConformityCertificate {
+  bool holds = true;
+  std::string why;
+  std::size_t cells = 0, boundary_facets = 0;
+  double boundary_measure = 0;
+};
+/// \pre t.is_valid(); `expected_boundary` < 0 skips the boundary comparison
+ConformityCertificate certify_conformity(const mesh::TemplatedMeshCompactSvb& t,
+                                         double expected_boundary = -1);
+
+} // namespace symmesh::adapt

@@ -1,0 +1,212 @@
+// symmesh adapt IN.tmesh [--refine-where EXPR]... [--smooth N] [--improve] [--delaunay]
+//   -o OUT.tmesh [--vtu OUT.vtu] [--report R.json] [--max-rounds N] [--quiet]
+// Section 5.2 / Technique 5.8 on a generated templated mesh — spec/adaptation.md#adapt-command
+#include "symmesh/adapt/templated_mesh_adaptation.h"
+#include "symmesh/apps/commands.h"
+#include "symmesh/io/atomic_file.h"
+#include "symmesh/io/mesh_writers.h"
+#include "symmesh/io/templated_mesh_file.h"
+#include "symmesh/mesh/structure_instance.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace symmesh::apps {
+namespace {
+struct AdaptOptions {
+  std::string in, out, vtu, report;
+  std::vector<std::string> refine_where;
+  std::size_t smooth = 0, max_rounds = 64, improve_rounds = 8;
+  bool delaunay = false, improve = false, quiet = false;
+};
+
+std::string extension(const std::string& path) {
+  return std::filesystem::path(path).extension().string();
+}
+
+/// Options are checked before the mesh is read, so bad input costs nothing and writes nothing.
+bool options_ok(const AdaptOptions& o) {
+  if (extension(o.in) != ".tmesh") {
+    print_error("adapt: " + o.in + ": expected a templated mesh .tmesh (symmesh generate ... " +
+                "--templated X.tmesh)");
+    return false;
+  }
+  if (extension(o.out) != ".tmesh") {
+    print_error("adapt: -o " + o.out + ": the adapted mesh is written as a .tmesh");
+    return false;
+  }
+  if (!o.vtu.empty() && extension(o.vtu) != ".vtu") {
+    print_error("adapt: --vtu " + o.vtu + ": expected a .vtu file name");
+    return false;
+  }
+  if (!o.delaunay && !o.improve && o.smooth == 0 && o.refine_where.empty()) {
+    print_error("adapt: nothing to do: give --delaunay, --smooth N, --improve or --refine-where");
+    return false;
+  }
+  if (o.max_rounds == 0) {
+    print_error("adapt: --max-rounds must be at least 1");
+    return false;
+  }
+  return true;
+}
+
+struct Counts {
+  std::size_t template_cells = 0, at_cells = 0, at_vertices = 0;
+  double quality = 0;
+};
+
+Counts counts_of(const mesh::TemplatedMeshCompactSvb& t) {
+  Counts c;
+  for (const auto& mt : t.templated.templates) c.template_cells += mt.mesh.cell_count();
+  const mesh::StructureInstance at(t);
+  c.at_cells = at.cell_count();
+  c.at_vertices = at.vertex_count();
+  c.quality = adapt::smallest_quality(t);
+  return c;
+}
+
+nlohmann::json to_json(const Counts& c) {
+  return {{"template_cells", c.template_cells},
+          {"cells_structure_instance", c.at_cells},
+          {"vertices_structure_instance", c.at_vertices},
+          {"smallest_angle_deg", c.quality}}; // the smallest dihedral angle in 3D
+}
+
+int run_adapt(const AdaptOptions& o) {
+  if (!options_ok(o)) return bad_input;
+  std::unique_ptr<mesh::Progress> progress;
+  if (!o.quiet) progress = std::make_unique<mesh::Progress>("symmesh adapt", std::cerr);
+  const auto say = [&](const std::string& line) {
+    if (progress) progress->message(line);
+  };
+  mesh::TemplatedMeshCompactSvb t;
+  std::vector<adapt::CellPredicate> where;
+  adapt::ConformityCertificate input;
+  try {
+    for (const auto& e : o.refine_where) where.push_back(adapt::parse_cell_predicate(e));
+    t = io::read_tmesh(o.in);
+    if (o.delaunay && t.templated.point_dimension != 2)
+      throw std::invalid_argument("--delaunay: Technique 5.8 is implemented in the plane only "
+                                  "(spec/adaptation.md#not-yet); this mesh is " +
+                                  std::to_string(t.templated.point_dimension) + "D");
+    // Throws on cells that are not triangles / tetrahedra.
+    input = adapt::certify_conformity(t);
+    if (!input.holds)
+      throw std::invalid_argument(o.in + ": the input does not conform: " + input.why);
+  } catch (const std::exception& e) {
+    print_error("adapt: " + std::string(e.what()));
+    return bad_input;
+  }
+  nlohmann::json report;
+  report["input"] = o.in;
+  try {
+    const auto before = counts_of(t);
+    report["before"] = to_json(before);
+    const auto added = adapt::expand_identifications(t);
+    say("read " + o.in + ": " + std::to_string(t.templated.templates.size()) + " templates, " +
+        std::to_string(t.templated.instance_count()) + " instances, " +
+        std::to_string(before.at_cells) + " cells in AT (" + std::to_string(added) +
+        " direct instance pairs added)");
+    nlohmann::json steps = nlohmann::json::array();
+    for (std::size_t k = 0; k < where.size(); ++k) {
+      const auto n = adapt::refine_where(t, where[k]);
+      steps.push_back({{"refine_where", o.refine_where[k]}, {"edges_bisected", n}});
+      say("refine-where \"" + o.refine_where[k] + "\": " + std::to_string(n) +
+          " template edges bisected");
+    }
+    if (o.smooth > 0) {
+      const auto n = adapt::smooth_interior_vertices(t, o.smooth, false);
+      steps.push_back({{"smooth", o.smooth}, {"moves", n}});
+      say("smooth: " + std::to_string(n) + " moves of template-interior vertices");
+    }
+    if (o.improve) {
+      const auto r = adapt::improve_quality(t, o.improve_rounds);
+      steps.push_back({{"improve", r.rounds}, {"moves", r.moves}, {"flips", r.flips}});
+      say("improve: " + std::to_string(r.rounds) + " rounds, " + std::to_string(r.moves) +
+          " moves, " + std::to_string(r.flips) + " flips");
+    }
+    if (o.delaunay) {
+      const auto r = adapt::make_delaunay(t, o.max_rounds, progress.get());
+      steps.push_back(
+          {{"delaunay", r.rounds}, {"flips", r.flips}, {"edges_bisected", r.bisections}});
+      say("delaunay: " + std::to_string(r.flips) + " flips, " + std::to_string(r.bisections) +
+          " interface edges bisected in " + std::to_string(r.rounds) + " rounds");
+    }
+    std::ostringstream why;
+    if (!t.is_valid(&why)) throw std::logic_error("the adapted mesh is not valid: " + why.str());
+    const auto cert = adapt::certify_conformity(t, input.boundary_measure);
+    if (!cert.holds) throw std::logic_error("the adapted mesh does not conform: " + cert.why);
+    const auto after = counts_of(t);
+    report["steps"] = steps;
+    report["after"] = to_json(after);
+    report["cells_structure_instance"] = after.at_cells;
+    report["conforming"] = true;
+    report["boundary_measure"] = cert.boundary_measure;
+    say("certified: AT conforms (" + std::to_string(after.at_cells) + " cells, boundary " +
+        std::to_string(cert.boundary_measure) + "); smallest " +
+        (t.templated.point_dimension == 2 ? "angle " : "dihedral angle ") +
+        std::to_string(before.quality) + " -> " + std::to_string(after.quality) + " deg");
+  } catch (const adapt::AdaptationLimit& e) {
+    print_error("adapt: " + std::string(e.what()));
+    return negative;
+  } catch (const std::invalid_argument& e) {
+    print_error("adapt: " + std::string(e.what()));
+    return bad_input;
+  } catch (const std::exception& e) {
+    print_error("adapt: " + std::string(e.what()));
+    return negative;
+  }
+  io::write_tmesh(t, o.out);
+  if (!o.vtu.empty()) {
+    const mesh::StructureInstance at(t);
+    io::MeshFileOptions w;
+    w.progress = progress.get();
+    io::write_mesh_file(at, o.vtu, w);
+  }
+  if (!o.report.empty()) {
+    report["seconds"] = progress ? progress->elapsed() : 0.0;
+    report["peak_rss_bytes"] = peak_rss_bytes();
+    io::write_file_atomically(o.report, report.dump(2) + "\n");
+  }
+  say("wrote " + o.out + (o.vtu.empty() ? "" : " and " + o.vtu));
+  return ok;
+}
+} // namespace
+
+void add_adapt(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<AdaptOptions>();
+  auto* cmd = app.add_subcommand(
+      "adapt",
+      "Adapt a templated mesh (.tmesh from generate --templated) on its templates (Section 5.2): "
+      "bisect the longest edge of cells that match --refine-where, smooth template-interior "
+      "vertices, improve quality by smoothing and flips, and make it Delaunay (Technique 5.8, "
+      "2D). Steps run in that order; every instance of a template changes alike, so the mesh "
+      "stays templated and symmetric, and the result is certified conforming before it is "
+      "written.");
+  cmd->add_option("mesh", o->in, "templated mesh (.tmesh)")->required();
+  cmd->add_option("-o,--output", o->out, "adapted templated mesh (.tmesh)")->required();
+  cmd->add_option("--vtu", o->vtu, "also write the structure instance as .vtu");
+  cmd->add_option("--report", o->report, "JSON report: counts before/after, steps, seconds");
+  cmd->add_option("--refine-where", o->refine_where,
+                  "bisect the longest edge of every cell with an instance image where EXPR holds: "
+                  "TERM [and TERM]..., TERM = NAME OP NUMBER, NAME in x y z (centroid) size "
+                  "(longest edge) quality (smallest angle, deg) region template instance; "
+                  "repeatable");
+  cmd->add_option("--smooth", o->smooth, "Laplacian sweeps over template-interior vertices");
+  cmd->add_flag("--improve", o->improve,
+                "quality pass (Section 5.2.6): quality-increasing smoothing and, in 2D, Delaunay "
+                "flips inside templates");
+  cmd->add_flag("--delaunay", o->delaunay,
+                "make AT Delaunay (Technique 5.8; every interior edge locally Delaunay; 2D)");
+  cmd->add_option("--max-rounds", o->max_rounds,
+                  "Technique 5.8: rounds of interface insertions before giving up (exit 1)")
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
+  cmd->callback([o, &exit_code] { exit_code = run_adapt(*o); });
+}
+
+} // namespace symmesh::apps
