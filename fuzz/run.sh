@@ -3,7 +3,7 @@
 # and runs a time-boxed campaign per harness, each starting from its saved corpus
 # (fuzz/corpus/<harness>/, which `make test` replays). Writes docs/fuzzing.md: executions,
 # coverage (libFuzzer's cov: edges) and findings per harness, with the machine and the command.
-# Usage: bash fuzz/run.sh [seconds per harness] [harness...]   (default 120, all three).
+# Usage: bash fuzz/run.sh [seconds per harness] [harness...]   (default 120, all four).
 # Findings go to build-fuzz/<harness>/{crash,timeout,oom}-*; copy each into fuzz/corpus/<harness>/
 # once fixed, so that it stays a regression test. Under ASan+UBSan an input costs ~15x its
 # Release time; -timeout=60 flags only real hangs.
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 secs=${1:-120}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate adapt)
 bash scripts/install-deps.sh --fuzz
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DSYMMESH_FUZZ=ON -DSYMMESH_BUILD_TESTS=OFF -DSYMMESH_BUILD_PYTHON=OFF -DSYMMESH_WERROR=OFF

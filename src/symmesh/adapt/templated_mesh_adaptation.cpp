@@ -565,6 +565,7 @@ DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_r
     const auto bad = non_tald(s);
     if (bad.empty()) break;
     if (r.rounds == max_rounds) {
+      s.store(); // the tables already name the vertices of the rounds made: keep t consistent
       const auto& e = bad.front();
       throw AdaptationLimit("Technique 5.8: after " + std::to_string(max_rounds) +
                             " rounds of boundary insertions, template " + std::to_string(e.t) +

@@ -47,10 +47,6 @@ bool options_ok(const AdaptOptions& o) {
     print_error("adapt: nothing to do: give --delaunay, --smooth N, --improve or --refine-where");
     return false;
   }
-  if (o.max_rounds == 0) {
-    print_error("adapt: --max-rounds must be at least 1");
-    return false;
-  }
   return true;
 }
 
@@ -202,8 +198,9 @@ void add_adapt(CLI::App& app, int& exit_code) {
                 "flips inside templates");
   cmd->add_flag("--delaunay", o->delaunay,
                 "make AT Delaunay (Technique 5.8; every interior edge locally Delaunay; 2D)");
-  cmd->add_option("--max-rounds", o->max_rounds,
-                  "Technique 5.8: rounds of interface insertions before giving up (exit 1)")
+  cmd->add_option(
+         "--max-rounds", o->max_rounds,
+         "Technique 5.8: rounds of interface insertions before giving up (exit 1); 0 = flips only")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
   cmd->callback([o, &exit_code] { exit_code = run_adapt(*o); });
