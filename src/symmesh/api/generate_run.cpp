@@ -53,7 +53,8 @@ const std::map<std::string, gen::Method>& methods() {
                                                     {"combined", gen::Method::combined},
                                                     {"conventional", gen::Method::conventional},
                                                     {"gmsh", gen::Method::gmsh},
-                                                    {"sao", gen::Method::sao}};
+                                                    {"sao", gen::Method::sao},
+                                                    {"merge", gen::Method::merge}};
   return m;
 }
 
@@ -176,6 +177,8 @@ gen::GenerationResult run_generation(const io::AnyStructure& x, const std::strin
     throw Refusal(kBadInput, source + ": " + e.what());
   } catch (const gen::MeshingError& e) {
     throw Refusal(kBadInput, source + ": meshing failed: " + e.what());
+  } catch (const gen::MergeError& e) {
+    throw Refusal(kNegative, source + ": " + e.what() + "; no output written");
   }
   if (!r.lemma_4_2_holds)
     throw Refusal(kNegative, source +
@@ -232,6 +235,8 @@ nlohmann::ordered_json generation_report(const gen::GenerationResult& r, const R
     j["quality"] = tetrahedron_quality_json(r.templated.templated);
   }
   j["lemma_4_2_holds"] = r.lemma_4_2_holds;
+  if (r.method == "merge")
+    j["interface_merging"] = {{"points_inserted", r.merge_insertions}, {"rounds", r.merge_rounds}};
   return j;
 }
 

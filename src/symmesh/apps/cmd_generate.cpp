@@ -104,7 +104,9 @@ void add_generate(CLI::App& app, int& exit_code) {
                   "6.5) | sao (small-angle optimisation, Section 6.3.2: a rotational slice is "
                   "cut into a centre n-gon and a ring slice, and the line meshes are refined "
                   "until every triangle meets --min-angle) | conventional (same mesher on the "
-                  "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry). 3D: auto, bpp "
+                  "whole geometry) | gmsh (Gmsh 2D Delaunay on the whole geometry) | merge (every "
+                  "template meshed on its own, interfaces sewn by Algorithm 5.3, Section 5.1.1). "
+                  "3D: auto, bpp "
                   "(Algorithm 5.7), rotational, reflective, combined, conventional (TetGen on the "
                   "whole geometry), gmsh (Gmsh 3D Delaunay on the whole geometry, the same "
                   "surfaces)")

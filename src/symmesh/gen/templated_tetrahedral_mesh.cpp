@@ -497,7 +497,7 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
   default:
     throw std::invalid_argument(
         "--method: only auto, bpp, rotational, reflective, combined, conventional and gmsh "
-        "generate 3D meshes so far (spec/generation.md#alg-5-7)");
+        "generate 3D meshes so far (merge and sao are planar; spec/generation.md#alg-5-7)");
   }
   return r;
 }

@@ -6,6 +6,7 @@
 #include "symmesh/core/line_mesh_conformity.h"
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/gmsh_mesher.h"
+#include "symmesh/gen/interface_merging.h"
 #include "symmesh/gen/pipeline_stages.h"
 #include "symmesh/gen/region_templates.h"
 #include "symmesh/gen/rotation_order.h"
@@ -835,6 +836,10 @@ GenerationResult generate_by(const core::TemplatedStructure<FT, 2>& x, Method me
     r.method = "sao";
     break;
   }
+  case Method::merge:
+    r = generate_merge(x, options);
+    r.method = "merge";
+    break;
   case Method::automatic:
   case Method::bpp:
     r = generate(x, options);

@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace symmesh::gen {
@@ -61,6 +62,8 @@ struct GenerationResult {
   GenerationTimings timings;
   bool lemma_4_2_holds = false;
   std::string lemma_4_2_failure; ///< the failing instance pair, when it does not hold
+  /// --method merge (spec/generation.md#merge): interface points Algorithm 5.3 inserted, rounds.
+  std::size_t merge_insertions = 0, merge_rounds = 0;
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):
@@ -87,7 +90,23 @@ struct GenerationResult {
 ///               every triangle meets --min-angle (spec/generation.md#sao);
 ///  gmsh         the peer: the whole geometry, per region, meshed by Gmsh's 2D Delaunay at the
 ///               same size (Gmsh has no smallest-angle parameter).
-enum class Method { automatic, bpp, rotational, reflective, combined, conventional, gmsh, sao };
+/// --method merge could not sew the interfaces within its bounds (the CLI's exit 1; names the
+/// instances): spec/generation.md#merge.
+struct MergeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class Method {
+  automatic,
+  bpp,
+  rotational,
+  reflective,
+  combined,
+  conventional,
+  gmsh,
+  sao,
+  merge
+};
 
 /// \pre x is a templated geometry (geometry templates, Eq. 4.2); options.size > 0. Throws
 /// std::invalid_argument for other input (and for `rotational` on a structure that is not
