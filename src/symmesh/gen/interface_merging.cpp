@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace symmesh::gen {
@@ -59,12 +60,21 @@ struct Overlap {
   core::RigidTransformation<FT, 2> r;
 };
 
+/// Segments [fa, fb] and [p, q] are collinear and share a part of positive length (exact).
 template <class FT>
-bool overlaps(const CarrierEdge<FT>& f, const P2<FT>& p, const P2<FT>& q) {
+bool overlaps(const P2<FT>& fa, const P2<FT>& fb, const P2<FT>& p, const P2<FT>& q) {
   using core::detail::orientation_sign;
-  if (orientation_sign<FT>(f.a, f.b, p) != 0 || orientation_sign<FT>(f.a, f.b, q) != 0)
-    return false;
-  const FT s = f.along(p), t = f.along(q), l = core::dot<FT, 2>(f.b - f.a, f.b - f.a);
+  const auto d = fb - fa;
+  // Intervals first for both ends: an exact zero test (a shared end, e.g. an n-gon's centre,
+  // is collinear with every ray) costs an exact evaluation, so it comes only when needed.
+  const auto surely_off = [&](const P2<FT>& r) {
+    const auto [lo, hi] = CGAL::to_interval(d[0] * (r[1] - fa[1]) - d[1] * (r[0] - fa[0]));
+    return lo > 0 || hi < 0;
+  };
+  if (surely_off(p) || surely_off(q)) return false;
+  if (orientation_sign<FT>(fa, fb, p) != 0 || orientation_sign<FT>(fa, fb, q) != 0) return false;
+  const FT s = core::dot<FT, 2>(p - fa, d), t = core::dot<FT, 2>(q - fa, d),
+           l = core::dot<FT, 2>(d, d);
   return std::max(std::min(s, t), FT(0)) < std::min(std::max(s, t), l);
 }
 
@@ -207,31 +217,38 @@ GenerationResult merge(const core::TemplatedStructure<FT, 2>& x, const Generatio
   stage("interface merging (Algorithm 5.3)", 0, "");
   t0 = Clock::now();
   f0 = minor_faults();
-  std::vector<core::RigidTransformation<FT, 2>> transform;
+  // World edges first: the relative transformation is composed only for pairs that overlap
+  // (all slices of an n-gon meet at its centre, so boxes alone would pass every pair).
+  std::vector<std::vector<std::pair<P2<FT>, P2<FT>>>> world(n_instances);
   std::vector<core::EnclosingBox<FT, 2>> box;
   for (std::size_t a = 0; a < n_instances; ++a) {
     const auto& s = x.instances[named.template_of[a]][named.local_of[a]].transformation;
-    transform.push_back(s);
-    std::vector<P2<FT>> world;
+    std::vector<P2<FT>> points;
     for (const auto& e : edges[named.template_of[a]]) {
-      world.push_back(s(e.a));
-      world.push_back(s(e.b));
+      world[a].push_back({s(e.a), s(e.b)});
+      points.push_back(world[a].back().first);
+      points.push_back(world[a].back().second);
     }
-    std::vector<core::VertexId> all(world.size());
+    std::vector<core::VertexId> all(points.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = core::VertexId(k);
-    box.push_back(core::EnclosingBox<FT, 2>::of(world, all));
+    box.push_back(core::EnclosingBox<FT, 2>::of(points, all));
   }
   std::vector<Overlap<FT>> pairs;
   for (std::size_t a = 0; a < n_instances; ++a)
     for (std::size_t b = 0; b < n_instances; ++b) {
       if (a == b || !box[a].overlaps(box[b])) continue;
-      const auto rel = transform[b].inverse() * transform[a];
       const std::size_t i = named.template_of[a], j = named.template_of[b];
-      for (std::size_t e = 0; e < edges[i].size(); ++e) {
-        const auto p = rel(edges[i][e].a), q = rel(edges[i][e].b);
-        for (std::size_t f = 0; f < edges[j].size(); ++f)
-          if (overlaps(edges[j][f], p, q)) pairs.push_back({a, b, i, e, j, f, rel});
-      }
+      std::optional<core::RigidTransformation<FT, 2>> rel;
+      for (std::size_t e = 0; e < world[a].size(); ++e)
+        for (std::size_t f = 0; f < world[b].size(); ++f) {
+          if (!overlaps(world[b][f].first, world[b][f].second, world[a][e].first,
+                        world[a][e].second))
+            continue;
+          const auto& tb = x.instances[j][named.local_of[b]].transformation;
+          const auto& ta = x.instances[i][named.local_of[a]].transformation;
+          if (!rel) rel = tb.inverse() * ta;
+          pairs.push_back({a, b, i, e, j, f, *rel});
+        }
     }
   constexpr std::size_t kMaxRounds = 64, kMaxInserted = 1000000;
   for (;;) {
