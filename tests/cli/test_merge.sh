@@ -4,7 +4,7 @@
 # Lemma 4.2 certified on them. On every built-in 2D object the output is certified, and read back
 # with meshio it is conforming with the object's area and every triangle counter-clockwise
 # (structure_instance_checks.py); the report counts the inserted points, and some object needs
-# them. Squares stacked with a horizontal drift need many rounds (1/1000: sewn, conforming;
+# them. Squares stacked with a horizontal drift need many rounds (1/100: sewn, conforming;
 # 1/5000: beyond the round cap, exit 1 naming the instance pair, no output). 3D is refused (exit 2).
 # Reruns are byte-identical.
 source "$(dirname "$0")/common.sh" "$@"
@@ -38,14 +38,14 @@ drift() {
  {"transformation": {"translation": ["$1", "1"]}}, {"transformation": {"translation": ["0", "2"]}}]}]}
 JSON
 }
-drift 1/1000
+drift 1/100
 if "$BIN" generate "$TMP/drift.json" --size 0.25 --method merge -o "$TMP/drift.vtu" \
     --report "$TMP/drift.r.json" --quiet; then
   if msg=$($PY tests/cli/structure_instance_checks.py "$TMP/drift.vtu" "$TMP/drift.r.json" 3 2>&1); then
-    pass "drift 1/1000 sewn: $(echo "$msg" | tail -1)"; else fail "drift 1/1000: $msg"; fi
+    pass "drift 1/100 sewn: $(echo "$msg" | tail -1)"; else fail "drift 1/100: $msg"; fi
   $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['interface_merging']['rounds'] > 10, r['interface_merging']" \
-    "$TMP/drift.r.json" && pass "drift 1/1000 needed many rounds" || fail "drift 1/1000 rounds"
-else fail "drift 1/1000: merge failed"; fi
+    "$TMP/drift.r.json" && pass "drift 1/100 needed many rounds" || fail "drift 1/100 rounds"
+else fail "drift 1/100: merge failed"; fi
 drift 1/5000
 expect_exit 1 "drift 1/5000 beyond the round cap" -- \
   "$BIN" generate "$TMP/drift.json" --size 0.25 --method merge -o "$TMP/drift5.vtu"

@@ -236,7 +236,10 @@ nlohmann::ordered_json generation_report(const gen::GenerationResult& r, const R
   }
   j["lemma_4_2_holds"] = r.lemma_4_2_holds;
   if (r.method == "merge")
-    j["interface_merging"] = {{"points_inserted", r.merge_insertions}, {"rounds", r.merge_rounds}};
+    j["interface_merging"] = {{"pairs_merged", r.merge_merged},
+                              {"points_moved", r.merge_moves},
+                              {"points_inserted", r.merge_insertions},
+                              {"rounds", r.merge_rounds}};
   return j;
 }
 

@@ -116,6 +116,118 @@ void split_boundary_cell(mesh::Mesh& m, std::size_t cell, mesh::IndexType u, mes
   }
 }
 
+/// A template boundary point to move: template, carrier edge, old and new exact position.
+template <class FT>
+struct Move {
+  std::size_t t = 0, e = 0;
+  P2<FT> from, to;
+};
+
+/// Algorithm 5.1: the pairs (p on e, w on f) of an overlap whose points are close (|R(p) − w| at
+/// most d_max, exactly), not yet related (R(p) is no point of f, R^-1(w) no point of e), and not
+/// carrier corners; sorted by distance (then by position, for determinism).
+template <class FT>
+struct ClosePair {
+  FT d2;
+  std::size_t overlap = 0;
+  P2<FT> p, w;
+};
+
+template <class FT>
+std::vector<ClosePair<FT>>
+close_vertex_pairs(const std::vector<std::vector<CarrierEdge<FT>>>& edges,
+                   const std::vector<Overlap<FT>>& pairs, const FT& dmax2) {
+  std::vector<ClosePair<FT>> out;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto& ov = pairs[k];
+    const auto& e = edges[ov.i][ov.e];
+    const auto& f = edges[ov.j][ov.f];
+    const auto back = ov.r.inverse();
+    for (const auto& [p, v] : e.points) {
+      if (p == e.a || p == e.b) continue;
+      const auto q = ov.r(p);
+      if (f.points.count(q)) continue;
+      for (const auto& [w, u] : f.points) {
+        if (w == f.a || w == f.b || e.points.count(back(w))) continue;
+        const FT d2 = core::dot<FT, 2>(q - w, q - w);
+        if (d2 <= dmax2) out.push_back({d2, k, p, w});
+      }
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const ClosePair<FT>& a, const ClosePair<FT>& b) {
+    if (a.d2 != b.d2) return a.d2 < b.d2;
+    if (a.overlap != b.overlap) return a.overlap < b.overlap;
+    if (a.p != b.p) return core::PointLess<FT, 2>()(a.p, b.p);
+    return core::PointLess<FT, 2>()(a.w, b.w);
+  });
+  return out;
+}
+
+/// Algorithm 5.2, Lines 14–29 for one pair: p and w move to their centre z (p to R^-1(z)), and
+/// every point related to a moved one through an overlap (R(point) is a point there) moves
+/// along. Returns the moves, or nothing when they contradict each other or one would leave the
+/// relative interior of its carrier edge or land on another point of it.
+template <class FT>
+std::optional<std::vector<Move<FT>>>
+merge_moves(const std::vector<std::vector<CarrierEdge<FT>>>& edges,
+            const std::vector<Overlap<FT>>& pairs, const ClosePair<FT>& c) {
+  const auto& ov = pairs[c.overlap];
+  P2<FT> z;
+  const auto q = ov.r(c.p);
+  for (int d = 0; d < 2; ++d) z[d] = (q[d] + c.w[d]) / FT(2);
+  std::vector<Move<FT>> moves{{ov.i, ov.e, c.p, ov.r.inverse()(z)}, {ov.j, ov.f, c.w, z}};
+  for (std::size_t next = 0; next < moves.size(); ++next) {
+    const auto m = moves[next];
+    for (const auto& o : pairs) {
+      if (o.i != m.t || o.e != m.e) continue;
+      const auto image = o.r(m.from);
+      if (!edges[o.j][o.f].points.count(image)) continue;
+      const Move<FT> related{o.j, o.f, image, o.r(m.to)};
+      bool seen = false;
+      for (const auto& other : moves)
+        if (other.t == related.t && other.e == related.e && other.from == related.from) {
+          if (other.to != related.to) return std::nullopt;
+          seen = true;
+        }
+      if (!seen) moves.push_back(related);
+    }
+  }
+  for (const auto& m : moves) {
+    const auto& e = edges[m.t][m.e];
+    if (m.from == e.a || m.from == e.b || !e.holds_inside(m.to)) return std::nullopt;
+    for (const auto& [point, v] : e.points)
+      if (point == m.to && point != m.from) return std::nullopt;
+  }
+  return moves;
+}
+
+/// The moves keep every triangle around a moved vertex positively oriented (exact on the
+/// rounded new coordinates): the validity of Section 5.2.2.
+template <class FT>
+bool moves_valid(const std::vector<Move<FT>>& moves,
+                 const std::vector<std::vector<CarrierEdge<FT>>>& edges,
+                 const mesh::TemplatedMesh& tm) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::map<std::size_t, std::map<mesh::IndexType, std::array<double, 2>>> moved;
+  for (const auto& m : moves)
+    moved[m.t][edges[m.t][m.e].points.at(m.from)] = {rounded(m.to[0]), rounded(m.to[1])};
+  for (const auto& [t, at] : moved) {
+    const auto& mesh = tm.templates[t].mesh;
+    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+      const auto* v = mesh.cell(c);
+      if (!at.count(v[0]) && !at.count(v[1]) && !at.count(v[2])) continue;
+      const auto p = [&](int k) {
+        const auto it = at.find(v[k]);
+        if (it != at.end()) return K::Point_2(it->second[0], it->second[1]);
+        const double* x = &mesh.vertex_coords[std::size_t(v[k]) * 2];
+        return K::Point_2(x[0], x[1]);
+      };
+      if (CGAL::orientation(p(0), p(1), p(2)) != CGAL::POSITIVE) return false;
+    }
+  }
+  return true;
+}
+
 template <class FT>
 GenerationResult merge(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o) {
   if (!(o.size > 0) || !std::isfinite(o.size))
@@ -250,6 +362,28 @@ GenerationResult merge(const core::TemplatedStructure<FT, 2>& x, const Generatio
           pairs.push_back({a, b, i, e, j, f, *rel});
         }
     }
+  // Algorithms 5.1 and 5.2: close pairs moved to their centre, nearest first, with every
+  // related point; a pair whose moves contradict or invert a triangle is left to Algorithm 5.3.
+  const FT dmax = exact_from_double<FT>(o.size) / FT(3);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& c : close_vertex_pairs(edges, pairs, dmax * dmax)) {
+      const auto moves = merge_moves(edges, pairs, c);
+      if (!moves || !moves_valid(*moves, edges, tm)) continue;
+      for (const auto& m : *moves) {
+        auto& points = edges[m.t][m.e].points;
+        const auto v = points.at(m.from);
+        points.erase(m.from);
+        points.emplace(m.to, v);
+        const double q[2] = {rounded(m.to[0]), rounded(m.to[1])};
+        std::copy(q, q + 2, &tm.templates[m.t].mesh.vertex_coords[std::size_t(v) * 2]);
+      }
+      r.merge_moves += moves->size();
+      ++r.merge_merged;
+      changed = true;
+      break; // Line 44: W is recomputed after every merge
+    }
+  }
   constexpr std::size_t kMaxRounds = 64, kMaxInserted = 1000000;
   for (;;) {
     std::size_t added = 0;
@@ -311,9 +445,11 @@ GenerationResult merge(const core::TemplatedStructure<FT, 2>& x, const Generatio
       }
     }
   }
-  say("interface merging (Algorithm 5.3): " + std::to_string(r.merge_insertions) +
-      " interface points inserted in " + std::to_string(r.merge_rounds) + " rounds (" +
-      std::to_string(pairs.size()) + " overlapping edge pairs)");
+  say("interface merging: " + std::to_string(r.merge_merged) + " close pairs merged (" +
+      std::to_string(r.merge_moves) + " points moved, Algorithm 5.2), " +
+      std::to_string(r.merge_insertions) + " interface points inserted in " +
+      std::to_string(r.merge_rounds) + " rounds (" + std::to_string(pairs.size()) +
+      " overlapping edge pairs)");
 
   // The exact boundary complexes: the SVB is read off their structure instance, and Lemma 4.2
   // is certified on them.

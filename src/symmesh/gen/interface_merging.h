@@ -1,20 +1,18 @@
-/// Section 5.1.1: independent template meshing and interface merging (Algorithm 5.3 in the
+/// Section 5.1.1: independent template meshing and interface merging (Algorithms 5.1–5.3 in the
 /// plane) — spec/generation.md#merge
 ///
 /// Every template is meshed on its own — its carrier's boundary edges split into N equal parts
 /// each (N from the size, decided exactly), Mesh_2 inside — with no boundary patch partition,
 /// so where two instances meet, their boundary points need not match. The interfaces are then
-/// sewn by Algorithm 5.3: every boundary point of an instance that lies in the relative interior
-/// of a boundary edge of another instance is a vertex-in-facet non-conformity; its preimage is
-/// inserted into that template (every instance of it), and the cell on that edge is split by
-/// connecting the new vertices to its apex. Inserted points are inserted again wherever they in
-/// turn hang, until nothing hangs (the set is finite: each point is reached from another through
-/// compositions of the instances' transformations). Every decision is exact: the boundary points
-/// are exact (a + k/N (b − a), and their images), collinearity and order along an edge are exact
-/// signs. The vertex identification (compact SVB) is read off the exact structure instance of the
-/// boundary complexes, and Lemma 4.2 is certified on them (check_interface_conformity, exact).
-/// Algorithm 5.2 (vertex merging within d_max) is not implemented: the sewing here is by
-/// refinement only (spec/generation.md#merge).
+/// sewn. Algorithms 5.1/5.2: close pairs of boundary points across an interface move to their
+/// centre, with every point related to them, when the movement is valid. Algorithm 5.3: every
+/// boundary point of an instance that still lies in the relative interior of a boundary edge of
+/// another instance is a vertex-in-facet non-conformity; its preimage is inserted into that
+/// template (every instance of it), and the cell on that edge is split by connecting the new
+/// vertices to its apex, until nothing hangs. Every decision is exact: the boundary points are
+/// exact (a + k/N (b − a), their images and centres), collinearity and order along an edge are
+/// exact signs. The vertex identification (compact SVB) is read off the exact structure instance
+/// of the boundary complexes, and Lemma 4.2 is certified on them (check_interface_conformity).
 #pragma once
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/templated_triangle_mesh.h"

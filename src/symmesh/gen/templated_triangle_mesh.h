@@ -62,8 +62,9 @@ struct GenerationResult {
   GenerationTimings timings;
   bool lemma_4_2_holds = false;
   std::string lemma_4_2_failure; ///< the failing instance pair, when it does not hold
-  /// --method merge (spec/generation.md#merge): interface points Algorithm 5.3 inserted, rounds.
-  std::size_t merge_insertions = 0, merge_rounds = 0;
+  /// --method merge (spec/generation.md#merge): interface points Algorithm 5.3 inserted, its
+  /// rounds, close pairs Algorithm 5.2 merged and the points it moved.
+  std::size_t merge_insertions = 0, merge_rounds = 0, merge_merged = 0, merge_moves = 0;
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):
