@@ -540,6 +540,9 @@ def write_report(summary, a, wall):
              "geometry at the same size, one thread, no angle bound) and, where the templated "
              "method is not bpp, `--method bpp` for contrast (the same mesh, without using the "
              "symmetry)",
+             "- independent meshing with interface merging (`--method merge`, Section 5.1.1, "
+             "Algorithms 5.1–5.3) is compared with bpp in [merge.md](merge.md) "
+             "(`bench/merge_2d.py`: cell counts, time, smallest angle)",
              "- seconds = BPP + line meshes + template meshing + SVB (conventional: the same on the "
              "whole geometry as one template per region; Gmsh: model set-up and meshing); the "
              "Lemma 4.2 certificate and file output are reported apart",
