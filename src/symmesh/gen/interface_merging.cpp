@@ -143,14 +143,33 @@ close_vertex_pairs(const std::vector<std::vector<CarrierEdge<FT>>>& edges,
     const auto& e = edges[ov.i][ov.e];
     const auto& f = edges[ov.j][ov.f];
     const auto back = ov.r.inverse();
+    // R(e) lies on f's line, so |R(p) − w|² = (s_p − s_w)² / L with s the parameter along f
+    // (s = (x − f.a)·(f.b − f.a), L = |f.b − f.a|²): a sorted sweep finds the close w.
+    const auto d = f.b - f.a;
+    const FT l = core::dot<FT, 2>(d, d);
+    const FT reach = dmax2 * l;
+    std::vector<std::pair<FT, P2<FT>>> along;
+    for (const auto& [w, u] : f.points)
+      if (w != f.a && w != f.b && !e.points.count(back(w)))
+        along.push_back({core::dot<FT, 2>(w - f.a, d), w});
+    std::sort(along.begin(), along.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [p, v] : e.points) {
       if (p == e.a || p == e.b) continue;
       const auto q = ov.r(p);
       if (f.points.count(q)) continue;
-      for (const auto& [w, u] : f.points) {
-        if (w == f.a || w == f.b || e.points.count(back(w))) continue;
-        const FT d2 = core::dot<FT, 2>(q - w, q - w);
-        if (d2 <= dmax2) out.push_back({d2, k, p, w});
+      const FT sq = core::dot<FT, 2>(q - f.a, d);
+      const auto at = std::lower_bound(along.begin(), along.end(), sq,
+                                       [](const auto& x, const FT& t) { return x.first < t; });
+      const auto take = [&](const std::pair<FT, P2<FT>>& x) {
+        const FT gap = x.first - sq;
+        if (gap * gap > reach) return false;
+        out.push_back({gap * gap / l, k, p, x.second});
+        return true;
+      };
+      for (auto it = at; it != along.end() && take(*it); ++it) {
+      }
+      for (auto it = at; it != along.begin() && take(*(it - 1)); --it) {
       }
     }
   }
