@@ -32,8 +32,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // negative outcome is documented: --method merge giving up on a structure whose
     // transformations carry hanging points to ever new places (spec/generation.md#merge).
     const bool merge_gave_up =
-        o.method == "merge" && std::string(e.what()).find("still has hanging vertices") !=
-                                   std::string::npos;
+        o.method == "merge" &&
+        std::string(e.what()).find("still has hanging vertices") != std::string::npos;
     if (e.exit_code() != symmesh::api::kBadInput && !merge_gave_up) __builtin_trap();
   }
   return 0;
