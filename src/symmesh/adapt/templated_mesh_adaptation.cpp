@@ -712,49 +712,69 @@ ConformityCertificate certify_conformity(const mesh::TemplatedMeshCompactSvb& t,
     r.holds = false;
     if (r.why.empty()) r.why = why;
   };
-  std::vector<std::vector<std::vector<IndexType>>> bnd(s.w.size());
+  // Facets as fixed-size sorted keys (-1 padded in 2D), counted by sorting: this runs after
+  // every operation of the fuzz harness, so it avoids node-based maps.
+  using Key = std::array<IndexType, 3>;
+  const auto key_of = [](const std::vector<IndexType>& f) {
+    Key k{-1, -1, -1};
+    std::copy(f.begin(), f.end(), k.begin());
+    std::sort(k.begin(), k.begin() + std::ptrdiff_t(f.size()));
+    return k;
+  };
+  std::vector<std::vector<Key>> bnd(s.w.size());
   for (std::size_t i = 0; i < s.w.size(); ++i) {
-    std::map<std::vector<IndexType>, std::size_t> count;
+    std::vector<Key> all;
     for (std::size_t c = 0; c < s.w[i].cells.size(); ++c) {
       if (orientation(s.w[i], s.w[i].cells[c]) <= 0)
         fail("templates[" + std::to_string(i) + "].cells[" + std::to_string(c) +
              "] is not positively oriented");
-      for (const auto& f : facets_of(s.w[i], s.w[i].cells[c])) ++count[f];
+      for (const auto& f : facets_of(s.w[i], s.w[i].cells[c])) all.push_back(key_of(f));
     }
-    for (const auto& [f, n] : count) {
-      if (n > 2)
-        fail("a facet of template " + std::to_string(i) + " lies in " + std::to_string(n) +
+    std::sort(all.begin(), all.end());
+    for (std::size_t k = 0; k < all.size();) {
+      std::size_t run = k;
+      while (run < all.size() && all[run] == all[k]) ++run;
+      if (run - k > 2)
+        fail("a facet of template " + std::to_string(i) + " lies in " + std::to_string(run - k) +
              " cells");
-      if (n == 1) bnd[i].push_back(f);
+      if (run - k == 1) bnd[i].push_back(all[k]);
+      k = run;
     }
   }
+  const int facet_size = s.w.empty() ? 0 : s.w[0].d;
   struct Seen {
-    std::size_t count = 0, instance = 0;
-    std::vector<IndexType> facet;
+    Key at;
+    std::size_t instance = 0;
+    Key facet;
   };
-  std::map<std::vector<IndexType>, Seen> at_facets;
+  std::vector<Seen> seen;
   const mesh::StructureInstance at(t);
   at.for_each_instance([&](const mesh::StructureInstance::Instance& inst) {
     r.cells += s.w[inst.template_index].cells.size();
     for (const auto& f : bnd[inst.template_index]) {
-      std::vector<IndexType> key;
-      for (IndexType v : f) key.push_back((*inst.global)[std::size_t(v)]);
-      std::sort(key.begin(), key.end());
-      auto& seen = at_facets[key];
-      if (++seen.count == 1) {
-        seen.instance = inst.index;
-        seen.facet = f;
-      }
+      Key key{-1, -1, -1};
+      for (int k = 0; k < facet_size; ++k)
+        key[std::size_t(k)] = (*inst.global)[std::size_t(f[std::size_t(k)])];
+      std::sort(key.begin(), key.begin() + facet_size);
+      seen.push_back({key, inst.index, f});
     }
   });
-  for (const auto& [key, seen] : at_facets) {
-    if (seen.count > 2) fail("a facet of AT lies in " + std::to_string(seen.count) + " instances");
-    if (seen.count != 1) continue;
+  std::sort(seen.begin(), seen.end(), [](const Seen& a, const Seen& b) {
+    return a.at != b.at ? a.at < b.at : a.instance < b.instance;
+  });
+  for (std::size_t k = 0; k < seen.size();) {
+    std::size_t run = k;
+    while (run < seen.size() && seen[run].at == seen[k].at) ++run;
+    const std::size_t count = run - k;
+    const auto& first = seen[k];
+    k = run;
+    if (count > 2) fail("a facet of AT lies in " + std::to_string(count) + " instances");
+    if (count != 1) continue;
     ++r.boundary_facets;
-    const auto& w = s.w[s.template_of[seen.instance]];
+    const auto& w = s.w[s.template_of[first.instance]];
     double q[3][3] = {};
-    for (std::size_t k = 0; k < seen.facet.size(); ++k)
-      s.transformation(seen.instance).apply(w.p(seen.facet[k]), q[k]);
+    for (std::size_t v = 0; v < std::size_t(facet_size); ++v)
+      s.transformation(first.instance).apply(w.p(first.facet[v]), q[v]);
     if (w.d == 2) {
       r.boundary_measure += std::hypot(q[1][0] - q[0][0], q[1][1] - q[0][1]);
     } else {
