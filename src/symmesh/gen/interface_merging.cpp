@@ -154,7 +154,9 @@ close_vertex_pairs(const std::vector<std::vector<CarrierEdge<FT>>>& edges,
         along.push_back({core::dot<FT, 2>(w - f.a, d), w});
     std::sort(along.begin(), along.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (const auto& [p, v] : e.points) {
+    for (const auto& entry : e.points) {
+      // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+      const P2<FT>& p = entry.first;
       if (p == e.a || p == e.b) continue;
       const auto q = ov.r(p);
       if (f.points.count(q)) continue;
@@ -230,8 +232,9 @@ bool moves_valid(const std::vector<Move<FT>>& moves,
   std::map<std::size_t, std::map<mesh::IndexType, std::array<double, 2>>> moved;
   for (const auto& m : moves)
     moved[m.t][edges[m.t][m.e].points.at(m.from)] = {rounded(m.to[0]), rounded(m.to[1])};
-  for (const auto& [t, at] : moved) {
-    const auto& mesh = tm.templates[t].mesh;
+  for (const auto& entry : moved) {
+    const auto& at = entry.second; // captured below: no structured binding (clang 14)
+    const auto& mesh = tm.templates[entry.first].mesh;
     for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
       const auto* v = mesh.cell(c);
       if (!at.count(v[0]) && !at.count(v[1]) && !at.count(v[2])) continue;
