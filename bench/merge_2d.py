@@ -30,14 +30,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-
-def sizes_for(area, counts):
-    # Mesh_2 with a 25° bound gives about area / (0.2 h²) triangles.
-    return [round((area / (0.2 * c)) ** 0.5, 6) for c in counts]
-
-
-def ngon_area(n):
-    return n / 2 * math.sin(2 * math.pi / n)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from generate_2d import commit, cpu_model, make_geometry, ngon_area, sizes_for  # noqa: E402
 
 
 COUNTS = [1e4, 1e5]
@@ -55,18 +49,6 @@ def objects():
     for name in ("star-rotational", "star-reflective-rotational"):
         out.append((name, sizes_for(1.1226, COUNTS), ("example",)))
     return out
-
-
-def make_geometry(symmesh, name, how, tmp):
-    geometry = os.path.join(tmp, name + ".json")
-    if how[0] == "example":
-        subprocess.run([symmesh, "example", name, "-o", geometry], check=True)
-    else:
-        whole = os.path.join(tmp, how[1] + ".json")
-        subprocess.run([symmesh, "example", how[1], "-o", whole], check=True)
-        subprocess.run([symmesh, "cut", whole, *how[2:], "-o", geometry], check=True,
-                       capture_output=True)
-    return geometry
 
 
 FIELDS = ["object", "size", "method", "repeat", "cells", "seconds_generation",
@@ -98,21 +80,6 @@ def run(symmesh, geometry, size, method, tmp):
             "points_moved": merging.get("points_moved", ""),
             "points_inserted": merging.get("points_inserted", ""),
             "rounds": merging.get("rounds", "")}
-
-
-def commit():
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                              text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
-def cpu_model():
-    for line in open("/proc/cpuinfo"):
-        if line.startswith("model name"):
-            return line.split(":", 1)[1].strip()
-    return platform.processor()
 
 
 def median(rows, key):

@@ -76,6 +76,17 @@ mesh::Transformation to_double_transformation(const T& t) {
   return out;
 }
 
+/// Template t instanced as in `instances`: each instance's transformation (rounded) is appended
+/// to tm's list and named by index, with its region.
+template <int D, class Instances>
+void add_instances(mesh::MeshTemplate& t, const Instances& instances, mesh::TemplatedMesh& tm) {
+  for (const auto& inst : instances) {
+    t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
+    t.region_ids.push_back(mesh::RegionIdType(inst.region));
+    tm.transformations.push_back(to_double_transformation<D>(inst.transformation));
+  }
+}
+
 /// The line mesh of one edge face [a, b] (subdivision point ids): N parts; interior points get
 /// local ids first .. first+N-2.
 struct FaceLine {

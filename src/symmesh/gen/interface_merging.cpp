@@ -322,21 +322,9 @@ GenerationResult merge(const core::TemplatedStructure<FT, 2>& x, const Generatio
     MeshingParameters p;
     p.size = o.size;
     p.min_angle_deg = o.min_angle_deg;
-    const auto out = mesh_domain_2(inputs[i], p);
     mesh::MeshTemplate t;
-    t.mesh.point_dimension = 2;
-    for (const auto& q : out.points) t.mesh.add_vertex(q.data());
-    for (const auto& c : out.triangles) {
-      const mesh::IndexType v[3] = {mesh::IndexType(c[0]), mesh::IndexType(c[1]),
-                                    mesh::IndexType(c[2])};
-      t.mesh.add_cell(mesh::ElementType::triangle, v);
-    }
-    orient_triangles_positively(t.mesh);
-    for (const auto& inst : x.instances[i]) {
-      t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
-      t.region_ids.push_back(mesh::RegionIdType(inst.region));
-      tm.transformations.push_back(support::to_double_transformation<2>(inst.transformation));
-    }
+    t.mesh = triangle_mesh_of(mesh_domain_2(inputs[i], p));
+    support::add_instances<2>(t, x.instances[i], tm);
     say("template " + std::to_string(i + 1) + "/" + std::to_string(x.templates.size()) + " ('" +
         x.templates[i].name + "'): " + std::to_string(t.mesh.cell_count()) +
         " triangles, meshed on its own");

@@ -434,21 +434,9 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
   auto& tm = r.templated.templated;
   tm.point_dimension = 2;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
-    const auto& out = meshed[i];
     mesh::MeshTemplate t;
-    t.mesh.point_dimension = 2;
-    for (const auto& p : out.points) t.mesh.add_vertex(p.data());
-    for (const auto& c : out.triangles) {
-      const mesh::IndexType v[3] = {mesh::IndexType(c[0]), mesh::IndexType(c[1]),
-                                    mesh::IndexType(c[2])};
-      t.mesh.add_cell(mesh::ElementType::triangle, v);
-    }
-    orient_triangles_positively(t.mesh);
-    for (const auto& inst : x.instances[i]) {
-      t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
-      t.region_ids.push_back(mesh::RegionIdType(inst.region));
-      tm.transformations.push_back(support::to_double_transformation<2>(inst.transformation));
-    }
+    t.mesh = triangle_mesh_of(meshed[i]);
+    support::add_instances<2>(t, x.instances[i], tm);
     say("template " + std::to_string(i + 1) + "/" + std::to_string(x.templates.size()) + " ('" +
         x.templates[i].name + "'): " + std::to_string(t.mesh.cell_count()) + " triangles");
     tm.templates.push_back(std::move(t));

@@ -83,6 +83,19 @@ void refine_with_progress(Mesher& mesher, const Cdt& cdt, const MeshingParameter
 }
 } // namespace
 
+mesh::Mesh triangle_mesh_of(const TriangleMeshOutput& out) {
+  mesh::Mesh m;
+  m.point_dimension = 2;
+  for (const auto& p : out.points) m.add_vertex(p.data());
+  for (const auto& c : out.triangles) {
+    const mesh::IndexType v[3] = {mesh::IndexType(c[0]), mesh::IndexType(c[1]),
+                                  mesh::IndexType(c[2])};
+    m.add_cell(mesh::ElementType::triangle, v);
+  }
+  orient_triangles_positively(m);
+  return m;
+}
+
 void orient_triangles_positively(mesh::Mesh& m) {
   for (std::size_t c = 0; c < m.cell_count(); ++c) {
     if (m.cell_types[c] != mesh::ElementType::triangle) continue;

@@ -58,6 +58,9 @@ struct MeshingError : std::runtime_error {
 /// MeshingError for a degenerate (zero-area) triangle.
 void orient_triangles_positively(mesh::Mesh& m);
 
+/// The mesher's output as a MESH (Listing 2.1) of positively oriented triangles.
+mesh::Mesh triangle_mesh_of(const TriangleMeshOutput& out);
+
 /// \pre parameters.size > 0; 0 <= min_angle_deg <= 33.8 (Mesh_2's termination bound)
 TriangleMeshOutput mesh_domain_2(const BoundaryInput& boundary,
                                  const MeshingParameters& parameters);
