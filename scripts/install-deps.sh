@@ -15,6 +15,7 @@ PACKAGES=(
   petsc-dev openmpi-bin
   zlib1g-dev
   python3-meshio python3-matplotlib python3-vtk9
+  time
   pybind11-dev python3-pybind11 python3-dev python3-pytest python3-networkx python3-numpy
 )
 
