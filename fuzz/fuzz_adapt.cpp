@@ -106,7 +106,7 @@ void apply(TemplatedMeshCompactSvb& t, const std::uint8_t* op) {
     break;
   }
   case 1:
-    adapt::smooth_interior_vertices(t, 1 + op[1] % 3, op[2] & 1);
+    adapt::smooth_vertices(t, 1 + op[1] % 3, op[2] & 1);
     break;
   case 2:
     if (t.templated.point_dimension == 2) adapt::make_templates_delaunay(t);

@@ -53,8 +53,14 @@ for h in "${harnesses[@]}"; do
   # keeps an input fast enough for 10^6 executions in an hour on one core.
   max_len=4096
   [ "$h" = adapt ] && max_len=31
-  ./build-fuzz/fuzz/fuzz_"$h" "$work/corpus" -max_total_time="$secs" -max_len="$max_len" -timeout=60 \
-    -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$work/" > "$log" 2>&1
+  # Speed (measured on the JSON harness, 120 s from its corpus: 356 -> 481 inputs/s): ASan keeps
+  # no allocation stacks (a finding is replayed with full stacks from its artifact), and the cheap
+  # harnesses use the plain scheduler, since entropic's feature bookkeeping took 22 % of the time.
+  extra=()
+  case "$h" in templated_structure_json | tmesh) extra=(-entropic=0) ;; esac
+  ASAN_OPTIONS=malloc_context_size=0 ./build-fuzz/fuzz/fuzz_"$h" "$work/corpus" \
+    -max_total_time="$secs" -max_len="$max_len" -timeout=60 -rss_limit_mb=4096 \
+    -print_final_stats=1 -artifact_prefix="$work/" "${extra[@]}" > "$log" 2>&1
   set -e
   runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
   cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+')

@@ -341,6 +341,122 @@ std::size_t lawson(Work& w) {
   return flips;
 }
 
+/// The smallest quality of the given cells.
+double min_quality(const Work& w, std::initializer_list<Cell> cells) {
+  double q = 180;
+  for (const auto& c : cells) q = std::min(q, cell_quality(w, c));
+  return q;
+}
+
+/// Removes a cell; the last cell takes its index.
+void remove_cell(Work& w, IndexType ci) {
+  const auto last = IndexType(w.cells.size() - 1);
+  for (int k = 0; k < w.arity(); ++k) {
+    auto& list = w.inc[std::size_t(w.cells[std::size_t(ci)][std::size_t(k)])];
+    list.erase(std::find(list.begin(), list.end(), ci));
+  }
+  if (ci != last) {
+    for (int k = 0; k < w.arity(); ++k)
+      std::replace(w.inc[std::size_t(w.cells[std::size_t(last)][std::size_t(k)])].begin(),
+                   w.inc[std::size_t(w.cells[std::size_t(last)][std::size_t(k)])].end(), last, ci);
+    w.cells[std::size_t(ci)] = w.cells[std::size_t(last)];
+  }
+  w.cells.pop_back();
+}
+
+/// 2-3 flip of the facet of cell ci opposite its vertex `skip`, shared with one more cell, when
+/// the new edge crosses the facet (the three new cells are then positive) and the smallest
+/// dihedral angle grows.
+bool quality_flip_2_3(Work& w, IndexType ci, int skip) {
+  const Cell c0 = w.cells[std::size_t(ci)];
+  const IndexType d = c0[std::size_t(skip)];
+  std::vector<IndexType> f;
+  for (int k = 0; k < 4; ++k)
+    if (k != skip) f.push_back(c0[std::size_t(k)]);
+  const auto two = w.cells_with({f[0], f[1], f[2]});
+  if (two.size() != 2) return false; // a template boundary facet: never flipped
+  const IndexType cj = two[0] == ci ? two[1] : two[0];
+  const Cell c1 = w.cells[std::size_t(cj)];
+  IndexType e = -1;
+  for (int k = 0; k < 4; ++k)
+    if (std::find(f.begin(), f.end(), c1[std::size_t(k)]) == f.end()) e = c1[std::size_t(k)];
+  if (e < 0 || !w.cells_with({d, e}).empty()) return false;
+  // c0 is positive; replacing one facet vertex by e gives a positive cell for each of the three
+  // exactly when the segment de crosses the facet's interior.
+  std::array<Cell, 3> n;
+  for (int k = 0, m = 0; k < 4; ++k) {
+    if (k == skip) continue;
+    n[std::size_t(m)] = c0;
+    n[std::size_t(m)][std::size_t(k)] = e;
+    if (orientation(w, n[std::size_t(m)]) <= 0) return false;
+    ++m;
+  }
+  if (!(min_quality(w, {n[0], n[1], n[2]}) > min_quality(w, {c0, c1}))) return false;
+  w.set_cell(ci, n[0]);
+  w.set_cell(cj, n[1]);
+  w.add_cell(n[2]);
+  return true;
+}
+
+/// 3-2 flip of edge {d, e} of cell ci when exactly three cells close around it (so it is no
+/// template boundary edge), the new facet does not exist yet, the edge crosses it, and the
+/// smallest dihedral angle grows.
+bool quality_flip_3_2(Work& w, IndexType ci, int p, int q) {
+  const Cell c0 = w.cells[std::size_t(ci)];
+  const IndexType d = c0[std::size_t(p)], e = c0[std::size_t(q)];
+  const auto three = w.cells_with({d, e});
+  if (three.size() != 3) return false;
+  std::map<IndexType, int> ring;
+  for (IndexType cj : three)
+    for (IndexType v : w.cells[std::size_t(cj)])
+      if (v != d && v != e) ++ring[v];
+  if (ring.size() != 3) return false;
+  for (const auto& r : ring)
+    if (r.second != 2) return false; // the cells do not close around the edge
+  auto it = ring.begin();
+  const IndexType a = (it++)->first, b = (it++)->first, c = it->first;
+  if (!w.cells_with({a, b, c}).empty()) return false;
+  Cell n0{a, b, c, d};
+  const int od = orientation(w, n0);
+  if (od == 0) return false;
+  if (od < 0) std::swap(n0[0], n0[1]);
+  Cell n1 = n0;
+  n1[3] = e;
+  // The ring surrounds the edge's line, so the edge crosses triangle abc iff d and e lie on
+  // opposite sides of its plane.
+  if (orientation(w, n1) >= 0) return false;
+  std::swap(n1[0], n1[1]);
+  const Cell o0 = w.cells[std::size_t(three[0])], o1 = w.cells[std::size_t(three[1])],
+             o2 = w.cells[std::size_t(three[2])];
+  if (!(min_quality(w, {n0, n1}) > min_quality(w, {o0, o1, o2}))) return false;
+  w.set_cell(three[0], n0);
+  w.set_cell(three[1], n1);
+  remove_cell(w, three[2]);
+  return true;
+}
+
+/// Section 5.2.6 in 3D: 2-3 and 3-2 flips inside a tetrahedral template, each made only when it
+/// raises the smallest dihedral angle of the cells it replaces. Facets on the template boundary
+/// are never flipped (Section 5.2.3), so every instance changes alike. Each flip raises the
+/// sorted vector of cell qualities, so the sweeps end. Returns the flip count.
+std::size_t quality_flips_3d(Work& w) {
+  std::size_t flips = 0;
+  const std::size_t cap = 64 * (w.cells.size() + 16);
+  for (bool again = true; again;) {
+    again = false;
+    for (IndexType ci = 0; ci < IndexType(w.cells.size()); ++ci) {
+      bool flipped = false;
+      for (int skip = 0; skip < 4 && !flipped; ++skip) flipped = quality_flip_2_3(w, ci, skip);
+      for (int p = 0; p < 4 && !flipped; ++p)
+        for (int q = p + 1; q < 4 && !flipped; ++q) flipped = quality_flip_3_2(w, ci, p, q);
+      if (!flipped) continue;
+      again = true;
+      if (++flips > cap) throw std::logic_error("quality flips did not end (a defect)");
+    }
+  }
+  return flips;
+}
+
 /// The vertex of a triangle other than a and b.
 IndexType apex(const Cell& c, IndexType a, IndexType b) {
   for (int k = 0; k < 3; ++k)
@@ -391,13 +507,162 @@ std::vector<TemplateEdge> non_tald(const Session& s) {
   return {bad.begin(), bad.end()};
 }
 
-std::size_t smooth(Session& s, std::size_t iterations, bool improve_only) {
-  std::size_t moves = 0;
-  for (auto& w : s.w) {
-    const auto fixed = boundary_vertices(w);
-    for (std::size_t it = 0; it < iterations; ++it)
+/// The template-boundary facets through each vertex (d vertices each, sorted).
+std::vector<std::vector<std::vector<IndexType>>> boundary_facets_by_vertex(const Work& w) {
+  std::vector<std::vector<std::vector<IndexType>>> out(w.vertex_count());
+  for (const auto& c : w.cells)
+    for (const auto& f : facets_of(w, c))
+      if (facet_cell_count(w, f) == 1)
+        for (IndexType v : f) out[std::size_t(v)].push_back(f);
+  return out;
+}
+
+/// The link of boundary vertex v in the template boundary when v may slide in its boundary patch
+/// (Section 5.2.2): its boundary facets form one flat disk — two collinear edges with v strictly
+/// between them (2D), or as many coplanar triangles as link vertices, each link vertex on two of
+/// them (3D). A vertex where the boundary bends lies in more than one patch and may not move:
+/// empty. Exact predicates decide.
+std::vector<IndexType>
+sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets, IndexType v) {
+  std::map<IndexType, int> degree;
+  for (const auto& f : facets)
+    for (IndexType u : f)
+      if (u != v) ++degree[u];
+  std::vector<IndexType> link;
+  for (const auto& [u, n] : degree) {
+    if (n != w.d - 1) return {};
+    link.push_back(u);
+  }
+  if (w.d == 2) {
+    if (facets.size() != 2 || link.size() != 2) return {};
+    const P2 a = p2(w.p(link[0])), o = p2(w.p(v)), b = p2(w.p(link[1]));
+    // (CGAL's ordering test presupposes collinearity.)
+    return CGAL::collinear(a, o, b) && CGAL::collinear_are_strictly_ordered_along_line(a, o, b)
+               ? link
+               : std::vector<IndexType>{};
+  }
+  if (facets.size() < 3 || link.size() != facets.size()) return {};
+  const P3 o = p3(w.p(v)), a = p3(w.p(link[0]));
+  std::size_t k = 1;
+  while (k < link.size() && CGAL::collinear(o, a, p3(w.p(link[k])))) ++k;
+  if (k == link.size()) return {};
+  const P3 b = p3(w.p(link[k]));
+  for (IndexType u : link)
+    if (CGAL::orientation(o, a, b, p3(w.p(u))) != CGAL::COPLANAR) return {};
+  return link;
+}
+
+/// A vertex of one template moved to the centroid of its boundary link.
+struct SlidingMove {
+  std::size_t t = 0;
+  IndexType v = 0;
+  std::vector<IndexType> link; ///< sorted
+};
+
+/// Equation 5.1: the moves of boundary vertex v of template t and of every vertex related to it
+/// through the identification tables (closed under them), each to the centroid of its own link.
+/// The link is carried across each table, so a related vertex moves to the image of v's new
+/// place. False when some related vertex may not slide, its link is not the image of v's, or it
+/// is reached with two different links (the irregular instance graph of Figure 4.11).
+bool plan_sliding_move(const Session& s, const std::vector<TableIndex>& index,
+                       const std::vector<std::vector<std::vector<std::vector<IndexType>>>>& bfacets,
+                       std::size_t t, IndexType v, std::vector<SlidingMove>& out) {
+  out.clear();
+  auto link = sliding_link(s.w[t], bfacets[t][std::size_t(v)], v);
+  if (link.empty()) return false;
+  std::map<std::pair<std::size_t, IndexType>, std::size_t> seen;
+  out.push_back({t, v, link});
+  seen[{t, v}] = 0;
+  for (std::size_t next = 0; next < out.size(); ++next) {
+    for (std::size_t k = 0; k < s.t.tables.size(); ++k)
+      for (bool forward : {true, false}) {
+        const SlidingMove m = out[next];
+        const auto& table = s.t.tables[k];
+        if (std::size_t(forward ? table.from_template : table.to_template) != m.t) continue;
+        const auto& map = forward ? index[k].fwd : index[k].bwd;
+        const auto iv = map.find(m.v);
+        if (iv == map.end()) continue;
+        const auto other = std::size_t(forward ? table.to_template : table.from_template);
+        std::vector<IndexType> mapped;
+        for (IndexType u : m.link) {
+          const auto iu = map.find(u);
+          if (iu == map.end()) return false;
+          mapped.push_back(iu->second);
+        }
+        std::sort(mapped.begin(), mapped.end());
+        const auto found = seen.find({other, iv->second});
+        if (found != seen.end()) {
+          if (out[found->second].link != mapped) return false;
+          continue;
+        }
+        if (sliding_link(s.w[other], bfacets[other][std::size_t(iv->second)], iv->second) != mapped)
+          return false;
+        seen[{other, iv->second}] = out.size();
+        out.push_back({other, iv->second, mapped});
+      }
+  }
+  return true;
+}
+
+/// Applies the moves if every cell around a moved vertex stays positively oriented (and, with
+/// `improve_only`, their smallest quality grows); otherwise leaves the templates unchanged.
+bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve_only) {
+  std::vector<std::array<double, 3>> old(moves.size()), at(moves.size());
+  bool changed = false;
+  for (std::size_t m = 0; m < moves.size(); ++m) {
+    const auto& w = s.w[moves[m].t];
+    at[m] = {0, 0, 0};
+    for (IndexType u : moves[m].link)
+      for (int i = 0; i < w.d; ++i)
+        at[m][std::size_t(i)] += w.p(u)[i] / double(moves[m].link.size());
+    for (int i = 0; i < w.d; ++i) {
+      old[m][std::size_t(i)] = w.p(moves[m].v)[i];
+      changed = changed || at[m][std::size_t(i)] != old[m][std::size_t(i)];
+    }
+  }
+  if (!changed) return false;
+  const auto around_quality = [&] {
+    double q = 180;
+    for (const auto& m : moves)
+      for (IndexType ci : s.w[m.t].inc[std::size_t(m.v)])
+        q = std::min(q, cell_quality(s.w[m.t], s.w[m.t].cells[std::size_t(ci)]));
+    return q;
+  };
+  const double before = improve_only ? around_quality() : 0;
+  const auto place = [&](const std::vector<std::array<double, 3>>& where) {
+    for (std::size_t m = 0; m < moves.size(); ++m) {
+      auto& w = s.w[moves[m].t];
+      std::copy(where[m].begin(), where[m].begin() + w.d,
+                &w.x[std::size_t(moves[m].v) * std::size_t(w.d)]);
+    }
+  };
+  place(at);
+  bool valid = true;
+  for (const auto& m : moves)
+    for (IndexType ci : s.w[m.t].inc[std::size_t(m.v)])
+      valid = valid && orientation(s.w[m.t], s.w[m.t].cells[std::size_t(ci)]) > 0;
+  if (valid && improve_only) valid = around_quality() > before;
+  if (!valid) place(old);
+  return valid;
+}
+
+SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only) {
+  SmoothReport r;
+  const auto index = index_tables(s.t);
+  std::vector<std::vector<std::vector<std::vector<IndexType>>>> bfacets;
+  for (const auto& w : s.w) bfacets.push_back(boundary_facets_by_vertex(w));
+  std::vector<SlidingMove> moves;
+  for (std::size_t it = 0; it < iterations; ++it)
+    for (std::size_t t = 0; t < s.w.size(); ++t) {
+      auto& w = s.w[t];
       for (IndexType v = 0; v < IndexType(w.vertex_count()); ++v) {
-        if (fixed[std::size_t(v)] || w.inc[std::size_t(v)].empty()) continue;
+        if (w.inc[std::size_t(v)].empty()) continue;
+        if (!bfacets[t][std::size_t(v)].empty()) {
+          if (plan_sliding_move(s, index, bfacets, t, v, moves) &&
+              apply_moves(s, moves, improve_only))
+            r.boundary_moves += moves.size();
+          continue;
+        }
         std::set<IndexType> around;
         for (IndexType ci : w.inc[std::size_t(v)])
           for (int k = 0; k < w.arity(); ++k)
@@ -421,10 +686,10 @@ std::size_t smooth(Session& s, std::size_t iterations, bool improve_only) {
         for (int i = 0; i < w.d; ++i) same = same && q[i] == w.p(v)[i];
         if (same) continue;
         std::copy(q, q + w.d, &w.x[std::size_t(v) * std::size_t(w.d)]);
-        ++moves;
+        ++r.interior_moves;
       }
-  }
-  return moves;
+    }
+  return r;
 }
 
 double longest_edge(const Work& w, const Cell& c, IndexType& a, IndexType& b) {
@@ -582,12 +847,12 @@ DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_r
   return r;
 }
 
-std::size_t smooth_interior_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
-                                     bool improve_only) {
+SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
+                             bool improve_only) {
   Session s(t);
-  const auto moves = smooth(s, iterations, improve_only);
+  const auto r = smooth(s, iterations, improve_only);
   s.store();
-  return moves;
+  return r;
 }
 
 CellPredicate parse_cell_predicate(const std::string& expression) {
@@ -681,10 +946,10 @@ ImproveReport improve_quality(mesh::TemplatedMeshCompactSvb& t, std::size_t max_
   Session s(t);
   ImproveReport r;
   while (r.rounds < max_rounds) {
-    const auto moves = smooth(s, 1, true);
+    const auto smoothed = smooth(s, 1, true);
+    const auto moves = smoothed.interior_moves + smoothed.boundary_moves;
     std::size_t flips = 0;
-    if (s.w.empty() || s.w[0].d == 2)
-      for (auto& w : s.w) flips += lawson(w);
+    for (auto& w : s.w) flips += w.d == 2 ? lawson(w) : quality_flips_3d(w);
     ++r.rounds;
     r.moves += moves;
     r.flips += flips;

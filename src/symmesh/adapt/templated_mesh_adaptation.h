@@ -76,12 +76,21 @@ struct DelaunayReport {
 DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
                              mesh::Progress* progress = nullptr);
 
-/// Section 5.2.2, template-interior vertices (on no template boundary facet): each moves to the
-/// mean of its neighbours when every cell around it stays positively oriented (exact), and, with
-/// `improve_only`, when the smallest quality of those cells grows. Returns the moves made over
-/// `iterations` Gauss–Seidel sweeps.
-std::size_t smooth_interior_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
-                                     bool improve_only);
+struct SmoothReport {
+  std::size_t interior_moves = 0; ///< template-interior vertices moved
+  std::size_t boundary_moves = 0; ///< template-boundary vertices moved, related copies counted
+};
+
+/// Section 5.2.2, Laplacian smoothing over `iterations` Gauss–Seidel sweeps. A template-interior
+/// vertex moves to the mean of its neighbours. A template-boundary vertex moves only inside its
+/// boundary patch: where its boundary facets form one flat disk (exact predicates), it moves to
+/// the mean of its boundary neighbours, and every vertex related to it through the
+/// identification tables moves with it to the image of that place (Equation 5.1); a vertex
+/// where the boundary bends, or one that the tables relate inconsistently (an irregular
+/// instance graph, Figure 4.11), stays. A move is made when every cell around every moved vertex
+/// stays positively oriented (exact) and, with `improve_only`, their smallest quality grows.
+SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
+                             bool improve_only);
 
 /// One instance image of a template cell, as --refine-where sees it.
 struct CellView {
@@ -106,8 +115,10 @@ struct ImproveReport {
   std::size_t rounds = 0, moves = 0, flips = 0;
 };
 
-/// Section 5.2.6: rounds of quality-improving smoothing of template-interior vertices and (2D)
-/// Delaunay flips inside templates, until a round changes nothing or `max_rounds` is reached.
+/// Section 5.2.6: rounds of quality-improving smoothing (smooth_vertices with `improve_only`:
+/// template-boundary vertices only inside their patch) and flips inside templates — Delaunay
+/// flips in 2D, quality-raising 2-3/3-2 flips in 3D; template boundary facets are never flipped —
+/// until a round changes nothing or `max_rounds` is reached.
 ImproveReport improve_quality(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds);
 
 /// The smallest cell quality of AT (it is a template's: rigid maps keep angles): smallest angle

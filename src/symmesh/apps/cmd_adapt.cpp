@@ -115,9 +115,12 @@ int run_adapt(const AdaptOptions& o) {
           " template edges bisected");
     }
     if (o.smooth > 0) {
-      const auto n = adapt::smooth_interior_vertices(t, o.smooth, false);
-      steps.push_back({{"smooth", o.smooth}, {"moves", n}});
-      say("smooth: " + std::to_string(n) + " moves of template-interior vertices");
+      const auto r = adapt::smooth_vertices(t, o.smooth, false);
+      steps.push_back({{"smooth", o.smooth},
+                       {"moves", r.interior_moves + r.boundary_moves},
+                       {"boundary_moves", r.boundary_moves}});
+      say("smooth: " + std::to_string(r.interior_moves) + " moves of template-interior vertices, " +
+          std::to_string(r.boundary_moves) + " of template-boundary vertices in their patch");
     }
     if (o.improve) {
       const auto r = adapt::improve_quality(t, o.improve_rounds);
@@ -178,8 +181,9 @@ void add_adapt(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
       "adapt",
       "Adapt a templated mesh (.tmesh from generate --templated) on its templates (Section 5.2): "
-      "bisect the longest edge of cells that match --refine-where, smooth template-interior "
-      "vertices, improve quality by smoothing and flips, and make it Delaunay (Technique 5.8, "
+      "bisect the longest edge of cells that match --refine-where, smooth vertices (boundary "
+      "vertices inside their patch, with their related copies), improve quality by smoothing and "
+      "flips, and make it Delaunay (Technique 5.8, "
       "2D). Steps run in that order; every instance of a template changes alike, so the mesh "
       "stays templated and symmetric, and the result is certified conforming before it is "
       "written.");
@@ -192,10 +196,13 @@ void add_adapt(CLI::App& app, int& exit_code) {
                   "TERM [and TERM]..., TERM = NAME OP NUMBER, NAME in x y z (centroid) size "
                   "(longest edge) quality (smallest angle, deg) region template instance; "
                   "repeatable");
-  cmd->add_option("--smooth", o->smooth, "Laplacian sweeps over template-interior vertices");
+  cmd->add_option("--smooth", o->smooth,
+                  "Laplacian sweeps: template-interior vertices, and template-boundary vertices "
+                  "where the boundary is flat, moved with every related vertex (Eq. 5.1)");
   cmd->add_flag("--improve", o->improve,
-                "quality pass (Section 5.2.6): quality-increasing smoothing and, in 2D, Delaunay "
-                "flips inside templates");
+                "quality pass (Section 5.2.6): quality-increasing smoothing and flips inside "
+                "templates (2D: Delaunay flips; 3D: 2-3/3-2 flips raising the smallest dihedral "
+                "angle)");
   cmd->add_flag("--delaunay", o->delaunay,
                 "make AT Delaunay (Technique 5.8; every interior edge locally Delaunay; 2D)");
   cmd->add_option(
