@@ -1,10 +1,13 @@
-"""Independent Delaunay check of a 2D structure instance (.vtu read with meshio): every interior
-edge is locally Delaunay — the apex of one triangle is not inside the circumcircle of the other.
+"""Independent Delaunay check of a structure instance (.vtu read with meshio): every interior
+edge (2D) / triangle (3D) is locally Delaunay — the apex of one cell is not inside the
+circumcircle / circumsphere of the other.
 The verdict is exact on the written doubles (Fractions); an edge whose apex lies inside counts as a
 violation only beyond the rounding of the written coordinates: (r - |d - c|) / r > 1e-9, with c
 and r the circumcentre and radius. Interior edges all locally Delaunay make the triangulation a
 constrained Delaunay triangulation of its domain (Delaunay when the domain is convex). Prints the
-edge count, the exact inside count and the largest relative depth.
+edge count, the exact inside count and the largest relative depth. In 3D the depth is measured
+in floating point first and decided exactly (Fractions: in-sphere sign, circumcentre) where it is
+within 1e-6 of the sphere or inside.
 Usage: delaunay_check.py MESH.vtu"""
 import collections
 import math
@@ -14,6 +17,9 @@ from fractions import Fraction
 import meshio
 
 m = meshio.read(sys.argv[1])
+if "tetra" in m.cells_dict:
+    import delaunay_check_3d
+    sys.exit(delaunay_check_3d.main(m))
 p = m.points[:, :2]
 tri = m.cells_dict["triangle"]
 edges = collections.defaultdict(list)

@@ -1,5 +1,6 @@
 // Section 5.2 and Technique 5.8 on a generated templated mesh — spec/adaptation.md#tmesh-adaptation
 #include "symmesh/adapt/templated_mesh_adaptation.h"
+#include "symmesh/gen/tetrahedral_mesher.h"
 #include "symmesh/mesh/structure_instance.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -71,6 +72,16 @@ struct Work {
     return IndexType(vertex_count() - 1);
   }
 };
+
+std::array<double, 3> sub3(const double* a, const double* b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+std::array<double, 3> cross3(const std::array<double, 3>& u, const std::array<double, 3>& v) {
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+double dot3(const std::array<double, 3>& u, const std::array<double, 3>& v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
 
 P2 p2(const double* q) {
   return P2(q[0], q[1]);
@@ -367,7 +378,9 @@ void remove_cell(Work& w, IndexType ci) {
 /// 2-3 flip of the facet of cell ci opposite its vertex `skip`, shared with one more cell, when
 /// the new edge crosses the facet (the three new cells are then positive) and the smallest
 /// dihedral angle grows.
-bool quality_flip_2_3(Work& w, IndexType ci, int skip) {
+using CellTest = std::function<bool(const Cell&)>;
+
+bool quality_flip_2_3(Work& w, IndexType ci, int skip, const CellTest* also = nullptr) {
   const Cell c0 = w.cells[std::size_t(ci)];
   const IndexType d = c0[std::size_t(skip)];
   std::vector<IndexType> f;
@@ -391,7 +404,9 @@ bool quality_flip_2_3(Work& w, IndexType ci, int skip) {
     if (orientation(w, n[std::size_t(m)]) <= 0) return false;
     ++m;
   }
-  if (!(min_quality(w, {n[0], n[1], n[2]}) > min_quality(w, {c0, c1}))) return false;
+  // With `also` (sliver removal) the count of cells failing it falls instead.
+  if (!also && !(min_quality(w, {n[0], n[1], n[2]}) > min_quality(w, {c0, c1}))) return false;
+  if (also && !((*also)(n[0]) && (*also)(n[1]) && (*also)(n[2]))) return false;
   w.set_cell(ci, n[0]);
   w.set_cell(cj, n[1]);
   w.add_cell(n[2]);
@@ -401,7 +416,7 @@ bool quality_flip_2_3(Work& w, IndexType ci, int skip) {
 /// 3-2 flip of edge {d, e} of cell ci when exactly three cells close around it (so it is no
 /// template boundary edge), the new facet does not exist yet, the edge crosses it, and the
 /// smallest dihedral angle grows.
-bool quality_flip_3_2(Work& w, IndexType ci, int p, int q) {
+bool quality_flip_3_2(Work& w, IndexType ci, int p, int q, const CellTest* also = nullptr) {
   const Cell c0 = w.cells[std::size_t(ci)];
   const IndexType d = c0[std::size_t(p)], e = c0[std::size_t(q)];
   const auto three = w.cells_with({d, e});
@@ -429,6 +444,7 @@ bool quality_flip_3_2(Work& w, IndexType ci, int p, int q) {
   const Cell o0 = w.cells[std::size_t(three[0])], o1 = w.cells[std::size_t(three[1])],
              o2 = w.cells[std::size_t(three[2])];
   if (!(min_quality(w, {n0, n1}) > min_quality(w, {o0, o1, o2}))) return false;
+  if (also && !((*also)(n0) && (*also)(n1))) return false;
   w.set_cell(three[0], n0);
   w.set_cell(three[1], n1);
   remove_cell(w, three[2]);
@@ -734,6 +750,717 @@ bool compare(double l, const std::string& op, double r) {
   if (op == "==") return l == r;
   return l != r;
 }
+/// The facets of a template with the cells on them (one: a template boundary facet; two: an
+/// interior facet), keyed by their sorted vertices.
+using FacetMap = std::map<std::array<IndexType, 3>, std::vector<IndexType>>;
+FacetMap facet_map_3d(const Work& w) {
+  FacetMap out;
+  for (IndexType ci = 0; ci < IndexType(w.cells.size()); ++ci)
+    for (const auto& f : facets_of(w, w.cells[std::size_t(ci)]))
+      out[{f[0], f[1], f[2]}].push_back(ci);
+  return out;
+}
+
+/// The vertex of cell c that is not on facet f.
+IndexType apex_3d(const Cell& c, const std::array<IndexType, 3>& f) {
+  for (IndexType v : c)
+    if (v != f[0] && v != f[1] && v != f[2]) return v;
+  return -1;
+}
+
+/// Template vertices bucketed in a uniform grid, to find the ones near a ball quickly; the
+/// decisions are the exact predicates on the candidates.
+struct PointGrid {
+  double h = 1;
+  std::unordered_map<std::uint64_t, std::vector<IndexType>> cells;
+  static std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k) {
+    const auto u = [](std::int64_t v) { return std::uint64_t(v + (1 << 20)) & 0x1fffff; };
+    return u(i) << 42 | u(j) << 21 | u(k);
+  }
+  explicit PointGrid(const Work& w) {
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (std::size_t v = 0; v < w.vertex_count(); ++v)
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = v == 0 ? w.p(IndexType(v))[i] : std::min(lo[i], w.p(IndexType(v))[i]);
+        hi[i] = v == 0 ? w.p(IndexType(v))[i] : std::max(hi[i], w.p(IndexType(v))[i]);
+      }
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
+    h = extent / std::max(1.0, std::cbrt(double(w.vertex_count())));
+    for (std::size_t v = 0; v < w.vertex_count(); ++v) {
+      const double* q = w.p(IndexType(v));
+      cells[key(std::int64_t(std::floor(q[0] / h)), std::int64_t(std::floor(q[1] / h)),
+                std::int64_t(std::floor(q[2] / h)))]
+          .push_back(IndexType(v));
+    }
+  }
+  /// The vertices in the grid cells a ball of radius r around c touches (a superset).
+  template <class F>
+  void near(const double* c, double r, F&& visit) const {
+    std::int64_t lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::int64_t(std::floor((c[i] - r) / h));
+      hi[i] = std::int64_t(std::floor((c[i] + r) / h));
+    }
+    for (auto i = lo[0]; i <= hi[0]; ++i)
+      for (auto j = lo[1]; j <= hi[1]; ++j)
+        for (auto k = lo[2]; k <= hi[2]; ++k) {
+          const auto it = cells.find(key(i, j, k));
+          if (it != cells.end())
+            for (IndexType v : it->second) visit(v);
+        }
+  }
+};
+
+/// x -> A^T (x - b): the inverse of a rigid transformation.
+void apply_inverse(const mesh::Transformation& t, const double* x, double* out) {
+  for (int i = 0; i < 3; ++i) {
+    out[i] = 0;
+    for (int j = 0; j < 3; ++j)
+      out[i] += t.matrix[std::size_t(j * 3 + i)] * (x[j] - t.translation[std::size_t(j)]);
+  }
+}
+
+P3 image3(const Session& s, std::size_t instance, IndexType v) {
+  double q[3];
+  s.transformation(instance).apply(s.w[s.template_of[instance]].p(v), q);
+  return P3(q[0], q[1], q[2]);
+}
+
+/// One round's view of the templates: facets, boundary triangles and point grids.
+struct Round3 {
+  std::vector<FacetMap> facets;
+  std::vector<PointGrid> grids;
+  explicit Round3(const Session& s) {
+    for (const auto& w : s.w) {
+      facets.push_back(facet_map_3d(w));
+      grids.emplace_back(w);
+      on_boundary.emplace_back(w.vertex_count(), 0);
+      for (const auto& [f, around] : facets.back())
+        if (around.size() == 1)
+          for (IndexType v : f) on_boundary.back()[std::size_t(v)] = 1;
+    }
+  }
+  std::vector<std::vector<char>> on_boundary;
+  bool is_interior_vertex(std::size_t t, IndexType v) const {
+    return !on_boundary[t][std::size_t(v)];
+  }
+  bool is_boundary(std::size_t t, std::array<IndexType, 3> f) const {
+    std::sort(f.begin(), f.end());
+    const auto it = facets[t].find(f);
+    return it != facets[t].end() && it->second.size() == 1;
+  }
+};
+
+/// The longest edge of triangle f of template t.
+TemplateEdge longest_edge_of(const Work& w, std::size_t t, const std::array<IndexType, 3>& f) {
+  TemplateEdge best{};
+  double len = -1;
+  for (int k = 0; k < 3; ++k) {
+    const IndexType a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
+    double l = 0;
+    for (int i = 0; i < 3; ++i) l += (w.p(a)[i] - w.p(b)[i]) * (w.p(a)[i] - w.p(b)[i]);
+    if (l > len) len = l, best = edge_of(t, a, b);
+  }
+  return best;
+}
+
+/// The interface triangles of instance pair (i, j) through a table map: triangle f of i's
+/// template whose vertices the map sends onto a boundary triangle of j's template.
+template <class F>
+void for_each_interface_triangle(const Session& s, const Round3& r, std::size_t i, std::size_t j,
+                                 const std::unordered_map<IndexType, IndexType>& map, F&& visit) {
+  const std::size_t ti = s.template_of[i], tj = s.template_of[j];
+  for (const auto& [f, around] : r.facets[ti]) {
+    if (around.size() != 1) continue;
+    std::array<IndexType, 3> g{};
+    bool all = true;
+    for (int k = 0; k < 3 && all; ++k) {
+      const auto it = map.find(f[std::size_t(k)]);
+      all = it != map.end();
+      if (all) g[std::size_t(k)] = it->second;
+    }
+    if (all && r.is_boundary(tj, g)) visit(f, around[0], g);
+  }
+}
+
+/// Technique 5.8, step "boundary facets Delaunay": the longest edges of the template boundary
+/// triangles whose diametral ball strictly contains a vertex — of their own template, or, for an
+/// interface triangle, of the instance across it (in AT's coordinates). A triangle with an empty
+/// diametral ball is a Delaunay face of its points, so the constrained Delaunay
+/// tetrahedralization of a template whose boundary has none encroached is Delaunay.
+std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
+                                              const std::vector<TableIndex>& index) {
+  std::set<TemplateEdge> bad;
+  for (std::size_t t = 0; t < s.w.size(); ++t) {
+    const auto& w = s.w[t];
+    for (const auto& [f, around] : r.facets[t]) {
+      if (around.size() != 1) continue;
+      const P3 a = p3(w.p(f[0])), b = p3(w.p(f[1])), c = p3(w.p(f[2]));
+      const P3 o = CGAL::circumcenter(a, b, c);
+      const double rad = std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
+      const double oc[3] = {o.x(), o.y(), o.z()};
+      bool hit = false;
+      r.grids[t].near(oc, rad, [&](IndexType q) {
+        if (hit || q == f[0] || q == f[1] || q == f[2]) return;
+        hit = CGAL::side_of_bounded_sphere(a, b, c, p3(w.p(q))) == CGAL::ON_BOUNDED_SIDE;
+      });
+      if (hit) bad.insert(longest_edge_of(w, t, f));
+    }
+  }
+  for (const auto& id : s.t.identifications)
+    for (bool forward : {true, false}) {
+      const auto i = std::size_t(forward ? id.from_instance : id.to_instance);
+      const auto j = std::size_t(forward ? id.to_instance : id.from_instance);
+      const auto& map =
+          forward ? index[std::size_t(id.table)].fwd : index[std::size_t(id.table)].bwd;
+      const auto ti = s.template_of[i], tj = s.template_of[j];
+      for_each_interface_triangle(s, r, i, j, map, [&](const auto& f, IndexType, const auto& g) {
+        const P3 a = image3(s, i, f[0]), b = image3(s, i, f[1]), c = image3(s, i, f[2]);
+        const P3 o = CGAL::circumcenter(a, b, c);
+        const double rad = std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
+        const double oc[3] = {o.x(), o.y(), o.z()};
+        double local[3];
+        apply_inverse(s.transformation(j), oc, local);
+        bool hit = false;
+        r.grids[tj].near(local, rad, [&](IndexType q) {
+          if (hit || q == g[0] || q == g[1] || q == g[2]) return;
+          hit = CGAL::side_of_bounded_sphere(a, b, c, image3(s, j, q)) == CGAL::ON_BOUNDED_SIDE;
+        });
+        if (hit) bad.insert(longest_edge_of(s.w[ti], ti, f));
+      });
+    }
+  return {bad.begin(), bad.end()};
+}
+
+/// Replaces the cells of template `w` by TetGen's constrained Delaunay tetrahedralization of its
+/// vertices and the given boundary triangles.
+void retetrahedralize_template(Work& w, const std::vector<std::array<IndexType, 3>>& surface) {
+  gen::SurfaceInput in;
+  for (std::size_t v = 0; v < w.vertex_count(); ++v)
+    in.points.push_back({w.p(IndexType(v))[0], w.p(IndexType(v))[1], w.p(IndexType(v))[2]});
+  for (const auto& f : surface)
+    in.triangles.push_back({std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])});
+  const auto out = gen::constrained_delaunay_tetrahedralization(in);
+  Work fresh;
+  fresh.d = 3;
+  for (const auto& q : out.points) fresh.add_vertex(q.data());
+  for (const auto& c : out.tetrahedra)
+    fresh.add_cell({IndexType(c[0]), IndexType(c[1]), IndexType(c[2]), IndexType(c[3])});
+  w = std::move(fresh);
+}
+
+/// Replaces every template's cells by TetGen's constrained Delaunay tetrahedralization of its
+/// vertices and its boundary triangles (kept as they are; TetGen's Steiner points, if any, are
+/// template-interior and come last).
+void retetrahedralize(Session& s, const Round3& r) {
+  for (std::size_t t = 0; t < s.w.size(); ++t) {
+    std::vector<std::array<IndexType, 3>> surface;
+    for (const auto& [f, around] : r.facets[t])
+      if (around.size() == 1) surface.push_back(f);
+    retetrahedralize_template(s.w[t], surface);
+  }
+}
+
+/// |D| / L^5 for apex e and cell c: D the in-sphere determinant det[q_i - e, |q_i - e|^2], L the
+/// largest distance among the five points. A perturbation of the coordinates by this fraction of
+/// L can change the in-sphere sign, so an apex inside by no more than ~1e-9 is a tie decided by
+/// rounding — the sliver of four cocircular points has no stable circumsphere, while D scales
+/// with its volume (tests/cli/delaunay_check.py measures the same).
+double insphere_measure(const Work& w, const Cell& c, IndexType e) {
+  double m[4][4];
+  double span = 0;
+  for (int i = 0; i < 4; ++i) {
+    double sq = 0;
+    for (int k = 0; k < 3; ++k) {
+      m[i][k] = w.p(c[std::size_t(i)])[k] - w.p(e)[k];
+      sq += m[i][k] * m[i][k];
+    }
+    m[i][3] = sq;
+    span = std::max(span, std::sqrt(sq));
+    for (int j = 0; j < 4; ++j) {
+      double dd = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double x = w.p(c[std::size_t(i)])[k] - w.p(c[std::size_t(j)])[k];
+        dd += x * x;
+      }
+      span = std::max(span, std::sqrt(dd));
+    }
+  }
+  const auto det3 = [](double a[3][3]) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  double det = 0;
+  for (int j = 0; j < 4; ++j) {
+    double minor[3][3];
+    for (int i = 1; i < 4; ++i)
+      for (int k = 0, kk = 0; k < 4; ++k)
+        if (k != j) minor[i - 1][kk++] = m[i][k];
+    det += (j % 2 ? -1 : 1) * m[0][j] * det3(minor);
+  }
+  return span > 0 ? std::abs(det) / std::pow(span, 5) : 0;
+}
+
+/// The interior facets of the templates that are not locally Delaunay (the apex across strictly
+/// inside the circumsphere of a cell), as (template, facet).
+std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> non_ld_facets(const Session& s,
+                                                                            const Round3& r) {
+  std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> out;
+  for (std::size_t t = 0; t < s.w.size(); ++t) {
+    const auto& w = s.w[t];
+    for (const auto& [f, around] : r.facets[t]) {
+      if (around.size() != 2) continue;
+      const Cell& c = w.cells[std::size_t(around[0])];
+      const IndexType e = apex_3d(w.cells[std::size_t(around[1])], f);
+      if (CGAL::side_of_bounded_sphere(p3(w.p(c[0])), p3(w.p(c[1])), p3(w.p(c[2])), p3(w.p(c[3])),
+                                       p3(w.p(e))) == CGAL::ON_BOUNDED_SIDE &&
+          insphere_measure(w, c, e) > 1e-9)
+        out.emplace_back(t, f);
+    }
+  }
+  return out;
+}
+
+/// Whether a cell is positive and not flat to rounding: 6 V / L^3 > 1e-9 (V its volume, L its
+/// longest edge). AT's writers use one coordinate per shared vertex, taken from one of its
+/// instances, so a cell of a rotated instance is written with coordinates that differ from its
+/// own image by rounding; only a cell this far from flat is positive in every written copy.
+bool robustly_positive(const Work& w, const Cell& c) {
+  if (orientation(w, c) <= 0) return false;
+  const auto u = sub3(w.p(c[1]), w.p(c[0])), v = sub3(w.p(c[2]), w.p(c[0])),
+             x = sub3(w.p(c[3]), w.p(c[0]));
+  double longest = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const auto e = sub3(w.p(c[std::size_t(i)]), w.p(c[std::size_t(j)]));
+      longest = std::max(longest, dot3(e, e));
+    }
+  longest = std::sqrt(longest);
+  return dot3(cross3(u, v), x) > 1e-9 * longest * longest * longest;
+}
+
+/// Edge removal (generalising the 3-2 flip): the k cells around edge {d, e} of cell ci, whose
+/// far vertices close a ring, become the 2(k - 2) cells of a fan of the ring joined to d and to
+/// e — the fan from the first ring vertex for which every fan triangle separates d from e with
+/// one orientation, the new facets are new, and every new cell passes `ok`. Only
+/// template-interior edges qualify (a closed ring).
+bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok) {
+  const Cell c0 = w.cells[std::size_t(ci)];
+  const IndexType d = c0[std::size_t(p)], e = c0[std::size_t(q)];
+  const auto around = w.cells_with({d, e});
+  if (around.size() < 3 || around.size() > 6) return false;
+  // Ring order: consecutive cells share a facet {d, e, r}.
+  std::map<IndexType, std::vector<IndexType>> next;
+  for (IndexType cj : around) {
+    std::vector<IndexType> far;
+    for (IndexType v : w.cells[std::size_t(cj)])
+      if (v != d && v != e) far.push_back(v);
+    next[far[0]].push_back(far[1]);
+    next[far[1]].push_back(far[0]);
+  }
+  for (const auto& [v, n] : next)
+    if (n.size() != 2) return false; // not closed: a boundary edge
+  std::vector<IndexType> ring{next.begin()->first};
+  IndexType prev = -1;
+  while (ring.size() < around.size()) {
+    const auto& n = next[ring.back()];
+    const IndexType nx = n[0] != prev ? n[0] : n[1];
+    prev = ring.back();
+    ring.push_back(nx);
+  }
+  if (next[ring.back()][0] != ring.front() && next[ring.back()][1] != ring.front()) return false;
+  double before = 180;
+  for (IndexType cj : around) before = std::min(before, cell_quality(w, w.cells[std::size_t(cj)]));
+  const std::size_t k = ring.size();
+  for (std::size_t r0 = 0; r0 < k; ++r0) {
+    std::vector<Cell> fresh;
+    int side = 0;
+    bool valid = true;
+    for (std::size_t i = 1; i + 1 < k && valid; ++i) {
+      const IndexType x = ring[r0], y = ring[(r0 + i) % k], z = ring[(r0 + i + 1) % k];
+      if (!w.cells_with({x, y, z}).empty()) valid = false;
+      Cell nd{x, y, z, d}, ne{x, y, z, e};
+      const int od = orientation(w, nd), oe = orientation(w, ne);
+      if (od == 0 || oe == 0 || od == oe || (side != 0 && od != side)) valid = false;
+      side = od;
+      if (od < 0) std::swap(nd[0], nd[1]);
+      if (oe < 0) std::swap(ne[0], ne[1]);
+      fresh.push_back(nd);
+      fresh.push_back(ne);
+    }
+    if (!valid) continue;
+    double after = 180;
+    for (const auto& c : fresh) {
+      valid = valid && ok(c);
+      after = std::min(after, cell_quality(w, c));
+    }
+    // The count of cells failing `ok` falls by at least one (c0): the removals end.
+    (void)after;
+    (void)before;
+    if (!valid) continue;
+    std::vector<IndexType> slots(around.begin(), around.end());
+    std::sort(slots.begin(), slots.end());
+    std::size_t used = 0;
+    for (; used < fresh.size() && used < slots.size(); ++used) w.set_cell(slots[used], fresh[used]);
+    for (std::size_t f = used; f < fresh.size(); ++f) w.add_cell(fresh[f]);
+    for (std::size_t r = slots.size(); r-- > used;) remove_cell(w, slots[r]);
+    return true;
+  }
+  return false;
+}
+
+/// The Delaunay tetrahedralization of points that lie on common spheres (the rings of a
+/// symmetric object) contains slivers of four nearly cocircular points, positive in template
+/// coordinates by a rounding margin and flat or negative in some rotated instance. Each is
+/// removed by the 2-3 or 3-2 flip (inside the template; boundary facets are never flipped) that
+/// raises the smallest dihedral angle and leaves cells positive in every instance; the points
+/// of such a flip are cospherical up to rounding, so the cells stay Delaunay. Returns the flips.
+std::size_t remove_slivers(Session& s) {
+  std::size_t flips = 0;
+  for (std::size_t t = 0; t < s.w.size(); ++t) {
+    auto& w = s.w[t];
+    const CellTest ok = [&](const Cell& c) { return robustly_positive(w, c); };
+    for (bool again = true; again;) {
+      again = false;
+      for (IndexType ci = 0; ci < IndexType(w.cells.size()); ++ci) {
+        if (ok(w.cells[std::size_t(ci)])) continue;
+        bool flipped = false;
+        for (int p = 0; p < 4 && !flipped; ++p)
+          for (int q = p + 1; q < 4 && !flipped; ++q) flipped = remove_edge(w, ci, p, q, ok);
+        for (int skip = 0; skip < 4 && !flipped; ++skip)
+          flipped = quality_flip_2_3(w, ci, skip, &ok);
+        if (!flipped) continue;
+        ++flips;
+        again = true;
+      }
+    }
+  }
+  return flips;
+}
+
+/// The cells of the templates that are flat to rounding, as (template, cell).
+std::vector<std::pair<std::size_t, IndexType>> not_positive_everywhere(const Session& s) {
+  std::vector<std::pair<std::size_t, IndexType>> out;
+  for (std::size_t t = 0; t < s.w.size(); ++t)
+    for (IndexType ci = 0; ci < IndexType(s.w[t].cells.size()); ++ci)
+      if (!robustly_positive(s.w[t], s.w[t].cells[std::size_t(ci)])) out.emplace_back(t, ci);
+  return out;
+}
+
+/// Definition 4.10 in 3D: the longest edges of the interface triangles whose cell on one side
+/// has the apex across the interface strictly inside its circumsphere (AT's coordinates).
+std::vector<TemplateEdge> non_tald_3d(const Session& s, const Round3& r,
+                                      const std::vector<TableIndex>& index) {
+  std::set<TemplateEdge> bad;
+  for (const auto& id : s.t.identifications) {
+    const auto i = std::size_t(id.from_instance), j = std::size_t(id.to_instance);
+    const auto ti = s.template_of[i], tj = s.template_of[j];
+    for_each_interface_triangle(
+        s, r, i, j, index[std::size_t(id.table)].fwd, [&](const auto& f, IndexType ci, auto g) {
+          std::sort(g.begin(), g.end());
+          const IndexType cj = r.facets[tj].at(g)[0];
+          const Cell& a = s.w[ti].cells[std::size_t(ci)];
+          const Cell& b = s.w[tj].cells[std::size_t(cj)];
+          const P3 qa = image3(s, i, apex_3d(a, f)), qb = image3(s, j, apex_3d(b, g));
+          const bool inside_a = CGAL::side_of_bounded_sphere(image3(s, i, a[0]), image3(s, i, a[1]),
+                                                             image3(s, i, a[2]), image3(s, i, a[3]),
+                                                             qb) == CGAL::ON_BOUNDED_SIDE;
+          const bool inside_b = CGAL::side_of_bounded_sphere(image3(s, j, b[0]), image3(s, j, b[1]),
+                                                             image3(s, j, b[2]), image3(s, j, b[3]),
+                                                             qa) == CGAL::ON_BOUNDED_SIDE;
+          if (inside_a || inside_b) bad.insert(longest_edge_of(s.w[ti], ti, f));
+        });
+  }
+  return {bad.begin(), bad.end()};
+}
+
+/// The template boundary triangles (sorted vertices).
+std::vector<std::array<IndexType, 3>> surface_of(const Work& w) {
+  std::vector<std::array<IndexType, 3>> out;
+  for (const auto& [f, around] : facet_map_3d(w))
+    if (around.size() == 1) out.push_back(f);
+  return out;
+}
+
+/// Whether boundary edge {a, b} between boundary triangles (a, b, c) and (a, b, d) of w should be
+/// flipped to {c, d} (Lawson, in the plane of a flat boundary patch): the two triangles lie in one
+/// plane up to the rounding of the coordinates (d within 1e-9 of the longest edge of it — the
+/// written coordinates of a slanted plane are not exactly coplanar), the quadrilateral is
+/// strictly convex, and d lies strictly inside the circle through a, b, c (exact).
+bool boundary_flip_wanted(const Work& w, IndexType a, IndexType b, IndexType c, IndexType d) {
+  const auto n = cross3(sub3(w.p(b), w.p(a)), sub3(w.p(c), w.p(a)));
+  const double nn = std::sqrt(dot3(n, n));
+  double longest = 0;
+  for (IndexType u : {a, b, c, d})
+    for (IndexType v : {a, b, c, d}) {
+      const auto e = sub3(w.p(u), w.p(v));
+      longest = std::max(longest, std::sqrt(dot3(e, e)));
+    }
+  if (!(nn > 0) || std::abs(dot3(n, sub3(w.p(d), w.p(a)))) / nn > 1e-9 * longest) return false;
+  // In-plane orientation of (p, q, r) along n, relative to its scale.
+  const auto side = [&](IndexType p, IndexType q, IndexType r) {
+    return dot3(cross3(sub3(w.p(q), w.p(p)), sub3(w.p(r), w.p(p))), n) / (nn * longest * longest);
+  };
+  const double eps = 1e-12; // a strictly convex quadrilateral, not one flat to rounding
+  if (!(side(a, b, c) * side(a, b, d) < -eps * eps && side(c, d, a) * side(c, d, b) < -eps * eps))
+    return false;
+  return CGAL::side_of_bounded_sphere(p3(w.p(a)), p3(w.p(b)), p3(w.p(c)), p3(w.p(d))) ==
+         CGAL::ON_BOUNDED_SIDE;
+}
+
+/// One flip of the boundary triangulation: template t, edge {a, b} -> {c, d}.
+struct SurfaceFlip {
+  std::size_t t = 0;
+  IndexType a = 0, b = 0, c = 0, d = 0;
+};
+
+/// Lawson flips of the template boundary triangulations inside flat patches, each made at every
+/// related edge at once (closed under the identification tables) and only when it is wanted in
+/// every template it touches, so interfaces stay conforming and a tie decided differently by the
+/// rounding of two copies is left alone. The templates whose boundary changed are
+/// re-tetrahedralized. Returns the flips (related copies counted).
+std::size_t surface_lawson(Session& s, std::size_t max_sweeps) {
+  std::size_t flips = 0;
+  for (std::size_t sweep = 0; sweep < max_sweeps; ++sweep) {
+    const auto index = index_tables(s.t);
+    std::vector<std::set<std::array<IndexType, 3>>> surf(s.w.size());
+    std::vector<std::map<std::pair<IndexType, IndexType>, std::vector<IndexType>>> wings(
+        s.w.size());
+    for (std::size_t t = 0; t < s.w.size(); ++t)
+      for (const auto& f : surface_of(s.w[t])) {
+        surf[t].insert(f);
+        for (int k = 0; k < 3; ++k) {
+          const IndexType u = f[std::size_t(k)], v = f[std::size_t((k + 1) % 3)],
+                          x = f[std::size_t((k + 2) % 3)];
+          wings[t][std::minmax(u, v)].push_back(x);
+        }
+      }
+    const auto tri = [](IndexType u, IndexType v, IndexType x) {
+      std::array<IndexType, 3> f{u, v, x};
+      std::sort(f.begin(), f.end());
+      return f;
+    };
+    std::vector<std::set<std::array<IndexType, 3>>> touched(s.w.size());
+    std::vector<char> changed(s.w.size(), 0);
+    std::size_t made = 0;
+    for (std::size_t t = 0; t < s.w.size(); ++t)
+      for (const auto& [edge, apexes] : wings[t]) {
+        if (apexes.size() != 2) continue;
+        const auto [a, b] = edge;
+        if (!boundary_flip_wanted(s.w[t], a, b, apexes[0], apexes[1])) continue;
+        std::vector<SurfaceFlip> closure{{t, a, b, apexes[0], apexes[1]}};
+        std::set<std::tuple<std::size_t, IndexType, IndexType>> seen{{t, a, b}};
+        bool ok = true;
+        for (std::size_t next = 0; next < closure.size() && ok; ++next)
+          for (std::size_t k = 0; k < s.t.tables.size() && ok; ++k)
+            for (bool forward : {true, false}) {
+              const SurfaceFlip m = closure[next];
+              const auto& table = s.t.tables[k];
+              if (std::size_t(forward ? table.from_template : table.to_template) != m.t) continue;
+              const auto& map = forward ? index[k].fwd : index[k].bwd;
+              const auto ia = map.find(m.a), ib = map.find(m.b);
+              if (ia == map.end() || ib == map.end()) continue;
+              const auto ic = map.find(m.c), id = map.find(m.d);
+              const auto other = std::size_t(forward ? table.to_template : table.from_template);
+              const auto [ra, rb] = std::minmax(ia->second, ib->second);
+              if (!seen.insert({other, ra, rb}).second) continue;
+              // The related edge must be a flat boundary edge with the related wings.
+              if (ic == map.end() || id == map.end() ||
+                  !surf[other].count(tri(ra, rb, ic->second)) ||
+                  !surf[other].count(tri(ra, rb, id->second))) {
+                // An edge of the interface's rim: the wing across it lies elsewhere.
+                ok = false;
+                break;
+              }
+              if (!boundary_flip_wanted(s.w[other], ra, rb, ic->second, id->second)) {
+                ok = false;
+                break;
+              }
+              closure.push_back({other, ra, rb, ic->second, id->second});
+            }
+        if (!ok) continue;
+        // Each triangle flips at most once a sweep, and the new edge must be new.
+        for (const auto& m : closure)
+          if (touched[m.t].count(tri(m.a, m.b, m.c)) || touched[m.t].count(tri(m.a, m.b, m.d)) ||
+              !surf[m.t].count(tri(m.a, m.b, m.c)) || !surf[m.t].count(tri(m.a, m.b, m.d)) ||
+              wings[m.t].count(std::minmax(m.c, m.d)))
+            ok = false;
+        if (!ok) continue;
+        for (const auto& m : closure) {
+          for (const auto& f : {tri(m.a, m.b, m.c), tri(m.a, m.b, m.d)}) {
+            surf[m.t].erase(f);
+            touched[m.t].insert(f);
+          }
+          for (const auto& f : {tri(m.c, m.d, m.a), tri(m.c, m.d, m.b)}) {
+            surf[m.t].insert(f);
+            touched[m.t].insert(f);
+          }
+          changed[m.t] = 1;
+          ++made;
+        }
+      }
+    if (made == 0) break;
+    flips += made;
+    for (std::size_t t = 0; t < s.w.size(); ++t)
+      if (changed[t]) retetrahedralize_template(s.w[t], {surf[t].begin(), surf[t].end()});
+  }
+  return flips;
+}
+
+/// Deletes template-interior vertices of template t (on no boundary facet, so in no
+/// identification table) and re-tetrahedralizes it: the vertices after each deleted one move
+/// down, and the tables follow. Fewer points never encroach a boundary triangle.
+void delete_interior_vertices(Session& s, std::size_t t, const std::set<IndexType>& gone) {
+  auto& w = s.w[t];
+  auto surface = surface_of(w);
+  std::vector<IndexType> to(w.vertex_count(), -1);
+  Work kept;
+  kept.d = 3;
+  for (IndexType v = 0; v < IndexType(w.vertex_count()); ++v)
+    if (!gone.count(v)) to[std::size_t(v)] = kept.add_vertex(w.p(v));
+  for (auto& f : surface)
+    for (auto& v : f) v = to[std::size_t(v)];
+  for (auto& table : s.t.tables)
+    for (auto& [a, b] : table.pairs) {
+      if (std::size_t(table.from_template) == t) a = to[std::size_t(a)];
+      if (std::size_t(table.to_template) == t) b = to[std::size_t(b)];
+    }
+  w = std::move(kept);
+  retetrahedralize_template(w, surface);
+}
+
+/// Slivers flat to rounding that no flip removed: four points of a symmetric object that lie on
+/// one circle (a point and its rotated copy on each interface of a slice, at two heights, span
+/// an isosceles trapezoid), so the Delaunay tetrahedralization may contain the flat cell on them.
+/// Such a sliver's template-interior vertices are deleted, or, when all four are boundary
+/// vertices, its centroid is inserted as a template-interior vertex (it lies strictly inside
+/// their circle and breaks the tie); then the template is re-tetrahedralized, a few times.
+/// Returns the vertices deleted and inserted.
+std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& rep) {
+  std::size_t deleted = 0, inserted = 0;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const auto flat = not_positive_everywhere(s);
+    if (flat.empty()) break;
+    std::map<std::size_t, std::set<IndexType>> gone;
+    std::map<std::size_t, std::vector<std::array<double, 3>>> added;
+    for (const auto& [t, ci] : flat) {
+      std::set<IndexType> on;
+      for (const auto& f : surface_of(s.w[t])) on.insert(f.begin(), f.end());
+      const Cell& c = s.w[t].cells[std::size_t(ci)];
+      bool interior = false;
+      for (IndexType v : c)
+        if (!on.count(v)) gone[t].insert(v), interior = true;
+      if (interior) continue;
+      std::array<double, 3> m{0, 0, 0};
+      for (IndexType v : c)
+        for (int k = 0; k < 3; ++k) m[std::size_t(k)] += s.w[t].p(v)[k] / 4;
+      added[t].push_back(m);
+    }
+    for (const auto& [t, vs] : gone) {
+      delete_interior_vertices(s, t, vs);
+      deleted += vs.size();
+    }
+    for (auto& [t, points] : added) {
+      if (gone.count(t)) continue; // indices changed; the next attempt sees the sliver again
+      const auto surface = surface_of(s.w[t]);
+      for (const auto& q : points) s.w[t].add_vertex(q.data());
+      retetrahedralize_template(s.w[t], surface);
+      inserted += points.size();
+    }
+    rep.flips += remove_slivers(s);
+  }
+  return {deleted, inserted};
+}
+
+/// Technique 5.8 in 3D: rounds of (1) bisecting the longest edge of every encroached template
+/// boundary triangle at every related edge, until none is encroached; (2) the constrained
+/// Delaunay tetrahedralization of every template; (3) bisecting the interface triangles that are
+/// not template-aware locally Delaunay. Ends when (3) finds none.
+DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progress* progress) {
+  DelaunayReport rep;
+  const auto limit = [&](const std::string& what) {
+    s.store();
+    throw AdaptationLimit("Technique 5.8 in 3D: " + what +
+                          " (ping-pong encroachment, Figure 5.17; protection balls are not "
+                          "implemented)");
+  };
+  const auto cell_count = [&] {
+    std::size_t n = 0;
+    for (const auto& w : s.w) n += w.cells.size();
+    return n;
+  };
+  // Refinement that keeps encroaching (acute boundary angles, Figure 5.17) is stopped by this
+  // cap long before the round cap: 16 times the input's template cells.
+  const std::size_t max_cells = 16 * cell_count() + 4096;
+  for (;;) {
+    if (cell_count() > max_cells)
+      limit("the template boundaries were refined to " + std::to_string(cell_count()) +
+            " template cells, over 16 times the input's, and boundary triangles are still "
+            "encroached");
+    rep.flips += surface_lawson(s, 64);
+    auto index = index_tables(s.t);
+    std::vector<TemplateEdge> bad;
+    {
+      const Round3 r(s);
+      bad = encroached_boundary(s, r, index);
+    }
+    bool phase_tald = false;
+    if (bad.empty()) {
+      phase_tald = true;
+      {
+        const Round3 r(s);
+        retetrahedralize(s, r);
+      }
+      rep.flips += remove_slivers(s);
+      const auto [deleted, inserted] = resolve_slivers(s, rep);
+      rep.vertices_deleted += deleted;
+      rep.vertices_inserted += inserted;
+      if (const auto flat = not_positive_everywhere(s); !flat.empty()) {
+        const Cell& c = s.w[flat.front().first].cells[std::size_t(flat.front().second)];
+        throw AdaptationLimit(
+            "Technique 5.8 in 3D: template " + std::to_string(flat.front().first) + " cell {" +
+            std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+            ", " + std::to_string(c[3]) + "} (and " + std::to_string(flat.size() - 1) +
+            " more) is a sliver, flat to rounding, that neither flips nor "
+            "vertex deletion or insertion removed");
+      }
+      const Round3 r(s);
+      const auto not_ld = non_ld_facets(s, r);
+      if (!not_ld.empty()) {
+        const auto& [t, f] = not_ld.front();
+        throw std::logic_error("Technique 5.8: template " + std::to_string(t) + " facet {" +
+                               std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " +
+                               std::to_string(f[2]) + "} (and " +
+                               std::to_string(not_ld.size() - 1) +
+                               " more) is not locally Delaunay after the constrained Delaunay "
+                               "tetrahedralization");
+      }
+      bad = non_tald_3d(s, r, index);
+      if (bad.empty()) break;
+    }
+    if (rep.rounds == max_rounds) {
+      const auto& e = bad.front();
+      limit("after " + std::to_string(max_rounds) + " rounds (--max-rounds), template " +
+            std::to_string(e.t) + " boundary edge {" + std::to_string(e.a) + ", " +
+            std::to_string(e.b) + "} (and " + std::to_string(bad.size() - 1) +
+            " more) still belongs to an encroached or not template-aware locally Delaunay "
+            "triangle");
+    }
+    rep.bisections += bisect(s, bad);
+    ++rep.rounds;
+    if (progress) {
+      std::size_t cells = 0;
+      for (const auto& w : s.w) cells += w.cells.size();
+      progress->message("Technique 5.8 round " + std::to_string(rep.rounds) + ": " +
+                        std::to_string(bad.size()) + " boundary edges bisected (" +
+                        (phase_tald ? "not template-aware locally Delaunay" : "encroached") +
+                        "), " + std::to_string(cells) + " template cells");
+    }
+  }
+  return rep;
+}
+
 } // namespace
 
 std::size_t expand_identifications(mesh::TemplatedMeshCompactSvb& t) {
@@ -821,9 +1548,12 @@ std::vector<TemplateEdge> non_tald_edges(const mesh::TemplatedMeshCompactSvb& t)
 DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
                              mesh::Progress* progress) {
   Session s(t);
-  if (s.w.empty() || s.w[0].d != 2)
-    throw std::invalid_argument("--delaunay (Technique 5.8) is planar only");
   if (progress) progress->stage("Technique 5.8", max_rounds, "rounds");
+  if (!s.w.empty() && s.w[0].d == 3) {
+    const auto r = make_delaunay_3d(s, max_rounds, progress);
+    s.store();
+    return r;
+  }
   DelaunayReport r;
   for (;;) {
     for (auto& w : s.w) r.flips += lawson(w);

@@ -64,6 +64,8 @@ std::vector<TemplateEdge> non_tald_edges(const mesh::TemplatedMeshCompactSvb& t)
 
 struct DelaunayReport {
   std::size_t rounds = 0, flips = 0, bisections = 0;
+  std::size_t vertices_deleted = 0;  ///< 3D: template-interior vertices of slivers
+  std::size_t vertices_inserted = 0; ///< 3D: centroids of slivers on boundary vertices
 };
 
 /// Technique 5.8 in the plane: Lawson flips in every template, then, while some interface edge

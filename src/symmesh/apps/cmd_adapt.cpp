@@ -85,10 +85,6 @@ int run_adapt(const AdaptOptions& o) {
   try {
     for (const auto& e : o.refine_where) where.push_back(adapt::parse_cell_predicate(e));
     t = io::read_tmesh(o.in);
-    if (o.delaunay && t.templated.point_dimension != 2)
-      throw std::invalid_argument("--delaunay: Technique 5.8 is implemented in the plane only "
-                                  "(spec/adaptation.md#not-yet); this mesh is " +
-                                  std::to_string(t.templated.point_dimension) + "D");
     // Throws on cells that are not triangles / tetrahedra.
     input = adapt::certify_conformity(t);
     if (!input.holds)
@@ -183,8 +179,8 @@ void add_adapt(CLI::App& app, int& exit_code) {
       "Adapt a templated mesh (.tmesh from generate --templated) on its templates (Section 5.2): "
       "bisect the longest edge of cells that match --refine-where, smooth vertices (boundary "
       "vertices inside their patch, with their related copies), improve quality by smoothing and "
-      "flips, and make it Delaunay (Technique 5.8, "
-      "2D). Steps run in that order; every instance of a template changes alike, so the mesh "
+      "flips, and make it Delaunay (Technique 5.8). Steps run in that order; every instance of a "
+      "template changes alike, so the mesh "
       "stays templated and symmetric, and the result is certified conforming before it is "
       "written.");
   cmd->add_option("mesh", o->in, "templated mesh (.tmesh)")->required();
@@ -204,7 +200,9 @@ void add_adapt(CLI::App& app, int& exit_code) {
                 "templates (2D: Delaunay flips; 3D: 2-3/3-2 flips raising the smallest dihedral "
                 "angle)");
   cmd->add_flag("--delaunay", o->delaunay,
-                "make AT Delaunay (Technique 5.8; every interior edge locally Delaunay; 2D)");
+                "make AT Delaunay (Technique 5.8; every interior edge (2D) / triangle (3D) locally "
+                "Delaunay; 3D: template boundaries refined until no triangle is encroached, then "
+                "TetGen's constrained Delaunay tetrahedralization of each template)");
   cmd->add_option(
          "--max-rounds", o->max_rounds,
          "Technique 5.8: rounds of interface insertions before giving up (exit 1); 0 = flips only")

@@ -7,9 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <map>
 #include <set>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace symmesh::gen {
 namespace {
@@ -151,14 +155,109 @@ TetrahedralMeshOutput run_tetgen(const SurfaceInput& s, std::string switches) {
 }
 } // namespace
 
+namespace {
+/// Appends / reads back plain values through a byte buffer (the child-to-parent pipe).
+template <class T>
+void put(std::string& b, const T& v) {
+  b.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+template <class T>
+T take(const std::string& b, std::size_t& at) {
+  T v;
+  if (at + sizeof v > b.size()) throw MeshingError("TetGen's result came back truncated");
+  std::memcpy(&v, b.data() + at, sizeof v);
+  at += sizeof v;
+  return v;
+}
+
+/// run_tetgen in a child process. TetGen 1.5.0 ends some degenerate inputs (five cospherical,
+/// coplanar points, for one) in an internal assertion — an abort of the whole process, not an
+/// exception. In a child, an abort becomes a MeshingError here, so no input ever crashes the
+/// command. The child sends the checked mesh, or the error it threw, through a pipe.
+TetrahedralMeshOutput run_tetgen_guarded(const SurfaceInput& s, const std::string& switches) {
+  int fd[2];
+  if (pipe(fd) != 0) return run_tetgen(s, switches);
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fd[0]);
+    close(fd[1]);
+    return run_tetgen(s, switches);
+  }
+  if (pid == 0) {
+    close(fd[0]);
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0) dup2(null, 2); // TetGen's assertion text is not the command's message
+    std::string b;
+    try {
+      const auto m = run_tetgen(s, switches);
+      put(b, char(0));
+      put(b, m.points.size());
+      for (const auto& q : m.points) put(b, q);
+      put(b, m.tetrahedra.size());
+      for (const auto& t : m.tetrahedra) put(b, t);
+      for (int r : m.region) put(b, r);
+    } catch (const BoundaryChanged& e) {
+      put(b, char(2));
+      put(b, e.triangle);
+      b += e.what();
+    } catch (const std::exception& e) {
+      put(b, char(1));
+      b += e.what();
+    }
+    for (std::size_t at = 0; at < b.size();) {
+      const auto n = write(fd[1], b.data() + at, b.size() - at);
+      if (n <= 0) break;
+      at += std::size_t(n);
+    }
+    close(fd[1]);
+    _exit(0);
+  }
+  close(fd[1]);
+  std::string b;
+  char chunk[65536];
+  for (;;) {
+    const auto n = read(fd[0], chunk, sizeof chunk);
+    if (n <= 0) break;
+    b.append(chunk, std::size_t(n));
+  }
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || b.empty())
+    throw MeshingError("TetGen aborted on this surface (an internal assertion of TetGen 1.5 on "
+                       "degenerate, e.g. cospherical and coplanar, points)");
+  std::size_t at = 0;
+  const char kind = take<char>(b, at);
+  if (kind == 2) {
+    const auto triangle = take<std::size_t>(b, at);
+    throw BoundaryChanged(b.substr(at), triangle);
+  }
+  if (kind == 1) throw MeshingError(b.substr(at));
+  TetrahedralMeshOutput m;
+  m.points.resize(take<std::size_t>(b, at));
+  for (auto& q : m.points) q = take<std::array<double, 3>>(b, at);
+  m.tetrahedra.resize(take<std::size_t>(b, at));
+  for (auto& t : m.tetrahedra) t = take<std::array<std::size_t, 4>>(b, at);
+  m.region.resize(m.tetrahedra.size());
+  for (auto& r : m.region) r = take<int>(b, at);
+  return m;
+}
+} // namespace
+
 TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
   check_input(s, p);
-  return run_tetgen(s, tetgen_switches(p, !s.seeds.empty()));
+  return run_tetgen_guarded(s, tetgen_switches(p, !s.seeds.empty()));
 }
 
 TetrahedralMeshOutput tetrahedralize_surface(const SurfaceInput& s) {
   check_input(s, TetrahedralMeshingParameters{1, 2});
-  return run_tetgen(s, "pYzQ");
+  return run_tetgen_guarded(s, "pYzQ");
+}
+
+TetrahedralMeshOutput constrained_delaunay_tetrahedralization(const SurfaceInput& s) {
+  check_input(s, TetrahedralMeshingParameters{1, 2});
+  return run_tetgen_guarded(s, "pYzQO0");
 }
 
 std::optional<std::size_t> boundary_mismatch(const SurfaceInput& s,

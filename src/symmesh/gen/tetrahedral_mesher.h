@@ -69,6 +69,12 @@ TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& surface,
 /// (cavities included), no point added on the surface, checked like mesh_domain_3. For carriers.
 TetrahedralMeshOutput tetrahedralize_surface(const SurfaceInput& surface);
 
+/// TetGen -pY -O0 on the surface and every given point (points on no triangle are inserted as
+/// well): its constrained Delaunay tetrahedralization, with no optimisation flips afterwards, no
+/// point added on the surface, checked like mesh_domain_3. For Technique 5.8 in 3D
+/// (adapt/templated_mesh_adaptation.h), where the surface triangles are Delaunay already.
+TetrahedralMeshOutput constrained_delaunay_tetrahedralization(const SurfaceInput& surface);
+
 /// The first input triangle that is not a boundary face of `m` exactly (by vertex ids), or the
 /// first boundary face of `m` that is no input triangle (reported as an index past the input's
 /// triangles), or nothing when the boundary is the input surface. A boundary face is a face of
