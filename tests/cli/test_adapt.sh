@@ -6,8 +6,8 @@
 # on the written doubles), and the symmetric objects still map onto themselves
 # (symmetry_check.py). Refinement alone must leave non-Delaunay edges, so the check can fail.
 # 3D: refinement, smoothing and --improve on the 8-TSV stay conforming with its volume and
-# boundary area; Technique 5.8 on five 3D objects (conforming, Delaunay, symmetric); the 8-TSV
-# hits the refinement cap. Reruns are byte-identical; progress lines on stderr; bad input exits 2 naming it
+# boundary area; Technique 5.8 on every built-in 3D object (conforming with the generated mesh's
+# volume and boundary area, Delaunay, the symmetric ones still symmetric); its round cap in 3D. Reruns are byte-identical; progress lines on stderr; bad input exits 2 naming it
 # and writes nothing; Technique 5.8's round cap exits 1.
 source "$(dirname "$0")/common.sh" "$@"
 PY=/usr/bin/python3
@@ -108,7 +108,8 @@ done
 # Technique 5.8 in 3D: the built-in 3D objects made Delaunay are conforming with the volume and
 # boundary area of the generated mesh, every interior triangle is locally Delaunay
 # (delaunay_check.py, exact), and the symmetric ones still map onto themselves.
-for case in "cube-halves - -" "finfet 0 0" "tsv-16 16 1" "tsv-32 32 1" "tsv-whole-8 - -"; do
+for case in "cube-halves - -" "finfet 0 0" "tsv-8 8 1" "tsv-16 16 1" "tsv-32 32 1" "tsv-64 64 1" \
+            "tsv-128 128 1" "tsv-whole-8 - -" "multi-tsv - -"; do
   set -- $case
   name=$1
   "$BIN" example "$name" -o "$TMP/$name.json"
@@ -128,15 +129,12 @@ for case in "cube-halves - -" "finfet 0 0" "tsv-16 16 1" "tsv-32 32 1" "tsv-whol
   [ "$name" = finfet ] && $PY tests/cli/delaunay_check.py "$TMP/$name.vtu" > /dev/null 2>&1 \
     && fail "the generated FinFET passes the 3D Delaunay check (the check cannot fail)"
 done
-# The 8-TSV's slices meet the outer boundary at 67.5 degrees; encroachment there does not settle
-# (Figure 5.17, no protection balls): the refinement cap ends it with exit 1, fast, and nothing
-# is written.
-"$BIN" example tsv-8 -o "$TMP/tsv8.json"
-"$BIN" generate "$TMP/tsv8.json" --size 0.3 --templated "$TMP/tsv8.tmesh" --quiet
-expect_exit 1 "Technique 5.8 on the 8-TSV beyond its refinement cap" -- \
-  timeout 120 "$BIN" adapt "$TMP/tsv8.tmesh" --delaunay -o "$TMP/tsv8.d.tmesh"
-grep -q "over 16 times the input's" "$TMP/stderr" && [ ! -e "$TMP/tsv8.d.tmesh" ] \
-  && pass "the cap names itself and writes nothing" || fail "cap message: $(tail -1 "$TMP/stderr")"
+# The round cap in 3D: the FinFET needs rounds of boundary bisection; --max-rounds 0 exits 1 naming
+# an edge, and nothing is written.
+expect_exit 1 "Technique 5.8 in 3D beyond --max-rounds" -- \
+  "$BIN" adapt "$TMP/finfet.tmesh" --delaunay --max-rounds 0 -o "$TMP/finfet.0.tmesh"
+grep -q "after 0 rounds (--max-rounds), template" "$TMP/stderr" && [ ! -e "$TMP/finfet.0.tmesh" ] \
+  && pass "the 3D cap names the edge and writes nothing" || fail "3D cap message: $(tail -1 "$TMP/stderr")"
 
 # Bad input: exit 2, one line naming it, nothing written.
 out="$TMP/none.tmesh"

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
@@ -883,28 +884,83 @@ void for_each_interface_triangle(const Session& s, const Round3& r, std::size_t 
   }
 }
 
-/// Technique 5.8, step "boundary facets Delaunay": the longest edges of the template boundary
-/// triangles whose diametral ball strictly contains a vertex — of their own template, or, for an
-/// interface triangle, of the instance across it (in AT's coordinates). A triangle with an empty
-/// diametral ball is a Delaunay face of its points, so the constrained Delaunay
-/// tetrahedralization of a template whose boundary has none encroached is Delaunay.
+/// The edge of encroached boundary triangle f (corners `x`, in the coordinates of the encroaching
+/// point q) to bisect: an edge whose diametral ball holds q — the longest such — as Delaunay
+/// refinement splits an encroached segment before the facet around it, which keeps the
+/// refinement near a crease from shrinking both sides in turn; else f's longest edge.
+TemplateEdge edge_to_split(const Work& w, std::size_t t, const std::array<IndexType, 3>& f,
+                           const std::array<P3, 3>& x, const P3& q) {
+  std::optional<TemplateEdge> best;
+  double len = -1;
+  for (int k = 0; k < 3; ++k) {
+    const P3 &u = x[std::size_t(k)], &v = x[std::size_t((k + 1) % 3)];
+    if (CGAL::side_of_bounded_sphere(u, v, q) != CGAL::ON_BOUNDED_SIDE) continue;
+    const double l = CGAL::squared_distance(u, v);
+    if (l > len) len = l, best = edge_of(t, f[std::size_t(k)], f[std::size_t((k + 1) % 3)]);
+  }
+  return best ? *best : longest_edge_of(w, t, f);
+}
+
+/// Whether some sphere through triangle (a, b, c) — centre o + h n on the line through its
+/// circumcentre o along its unit normal n, |h| <= 2 rho (rho its circumradius) — holds none of
+/// the points strictly inside: then the triangle is a face of their Delaunay tetrahedralization.
+/// Point q is inside that sphere iff |q - o|^2 - rho^2 < 2 h (q - o).n, one bound on h per point,
+/// so this is a one-dimensional feasibility question. The diametral ball (h = 0) alone is
+/// stricter: next to a crease at an acute angle it holds the points of the other facet, and
+/// refining for it there does not end. Beyond 4.5 rho from o no such sphere reaches. Decided in
+/// floating point: the tetrahedralization built on it is checked exactly afterwards.
+/// `worst` is set to a point that rules the sphere out.
+bool delaunay_face(const P3& a, const P3& b, const P3& c, const std::vector<P3>& points,
+                   std::optional<P3>& worst) {
+  const P3 o = CGAL::circumcenter(a, b, c);
+  const double rho2 = CGAL::squared_distance(o, a), rho = std::sqrt(rho2);
+  auto nv = CGAL::cross_product(b - a, c - a);
+  const double nn = std::sqrt(nv.squared_length());
+  if (!(nn > 0)) return false;
+  nv = nv / nn;
+  double lo = -2 * rho, hi = 2 * rho;
+  for (const auto& q : points) {
+    const auto d = q - o;
+    const double power = d.squared_length() - rho2, height = d * nv;
+    // inside for h with power < 2 h height: keep h where power >= 2 h height.
+    if (height > 0)
+      hi = std::min(hi, power / (2 * height));
+    else if (height < 0)
+      lo = std::max(lo, power / (2 * height));
+    else if (power < 0)
+      lo = hi + 1;
+    if (!(lo <= hi)) {
+      worst = q;
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Technique 5.8, step "boundary facets Delaunay": the edges to bisect of the template boundary
+/// triangles that are no Delaunay face (delaunay_face) of the vertices near them — of their own
+/// template, and, for an interface triangle, of the instance across it too (AT's coordinates).
+/// With every boundary triangle a Delaunay face, the constrained Delaunay tetrahedralization of
+/// a template is Delaunay.
 std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
                                               const std::vector<TableIndex>& index) {
   std::set<TemplateEdge> bad;
+  std::vector<P3> near;
   for (std::size_t t = 0; t < s.w.size(); ++t) {
     const auto& w = s.w[t];
-    for (const auto& [f, around] : r.facets[t]) {
-      if (around.size() != 1) continue;
+    for (const auto& entry : r.facets[t]) {
+      if (entry.second.size() != 1) continue;
+      const auto& f = entry.first;
       const P3 a = p3(w.p(f[0])), b = p3(w.p(f[1])), c = p3(w.p(f[2]));
       const P3 o = CGAL::circumcenter(a, b, c);
-      const double rad = std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
+      const double reach = 4.5 * std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
       const double oc[3] = {o.x(), o.y(), o.z()};
-      bool hit = false;
-      r.grids[t].near(oc, rad, [&](IndexType q) {
-        if (hit || q == f[0] || q == f[1] || q == f[2]) return;
-        hit = CGAL::side_of_bounded_sphere(a, b, c, p3(w.p(q))) == CGAL::ON_BOUNDED_SIDE;
+      near.clear();
+      r.grids[t].near(oc, reach, [&](IndexType q) {
+        if (q != f[0] && q != f[1] && q != f[2]) near.push_back(p3(w.p(q)));
       });
-      if (hit) bad.insert(longest_edge_of(w, t, f));
+      std::optional<P3> by;
+      if (!delaunay_face(a, b, c, near, by)) bad.insert(edge_to_split(w, t, f, {a, b, c}, *by));
     }
   }
   for (const auto& id : s.t.identifications)
@@ -917,16 +973,22 @@ std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
       for_each_interface_triangle(s, r, i, j, map, [&](const auto& f, IndexType, const auto& g) {
         const P3 a = image3(s, i, f[0]), b = image3(s, i, f[1]), c = image3(s, i, f[2]);
         const P3 o = CGAL::circumcenter(a, b, c);
-        const double rad = std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
+        const double reach = 4.5 * std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
         const double oc[3] = {o.x(), o.y(), o.z()};
+        near.clear();
+        // Both sides: the sphere must be empty of the two instances' vertices at once.
         double local[3];
-        apply_inverse(s.transformation(j), oc, local);
-        bool hit = false;
-        r.grids[tj].near(local, rad, [&](IndexType q) {
-          if (hit || q == g[0] || q == g[1] || q == g[2]) return;
-          hit = CGAL::side_of_bounded_sphere(a, b, c, image3(s, j, q)) == CGAL::ON_BOUNDED_SIDE;
+        apply_inverse(s.transformation(i), oc, local);
+        r.grids[ti].near(local, reach, [&](IndexType q) {
+          if (q != f[0] && q != f[1] && q != f[2]) near.push_back(image3(s, i, q));
         });
-        if (hit) bad.insert(longest_edge_of(s.w[ti], ti, f));
+        apply_inverse(s.transformation(j), oc, local);
+        r.grids[tj].near(local, reach, [&](IndexType q) {
+          if (q != g[0] && q != g[1] && q != g[2]) near.push_back(image3(s, j, q));
+        });
+        std::optional<P3> by;
+        if (!delaunay_face(a, b, c, near, by))
+          bad.insert(edge_to_split(s.w[ti], ti, f, {a, b, c}, *by));
       });
     }
   return {bad.begin(), bad.end()};

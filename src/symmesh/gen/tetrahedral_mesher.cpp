@@ -257,7 +257,23 @@ TetrahedralMeshOutput tetrahedralize_surface(const SurfaceInput& s) {
 
 TetrahedralMeshOutput constrained_delaunay_tetrahedralization(const SurfaceInput& s) {
   check_input(s, TetrahedralMeshingParameters{1, 2});
-  return run_tetgen_guarded(s, "pYzQO0");
+  try {
+    return run_tetgen_guarded(s, "pYzQO0");
+  } catch (const MeshingError&) {
+    // TetGen's abort on degenerate points depends on its insertion order: once more with the
+    // points reversed (and the result numbered back).
+  }
+  const std::size_t n = s.points.size();
+  SurfaceInput r = s;
+  std::reverse(r.points.begin(), r.points.end());
+  for (auto& t : r.triangles)
+    for (auto& v : t) v = n - 1 - v;
+  auto m = run_tetgen_guarded(r, "pYzQO0");
+  std::reverse(m.points.begin(), m.points.begin() + std::ptrdiff_t(n));
+  for (auto& t : m.tetrahedra)
+    for (auto& v : t)
+      if (v < n) v = n - 1 - v;
+  return m;
 }
 
 std::optional<std::size_t> boundary_mismatch(const SurfaceInput& s,
