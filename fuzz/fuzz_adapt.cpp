@@ -7,7 +7,10 @@
 // or --refine-where with an expression taken from the bytes. After each operation: the compact SVB
 // is valid, the structure instance conforms (the certificate: every cell positive, no facet of AT
 // in three cells, AT's boundary measure unchanged — a hanging vertex would add an interface to it)
-// and AT's area or volume is unchanged. A refusal the operation documents (std::invalid_argument
+// and AT's area or volume is unchanged; and the operation done on the templates equals it done on
+// AT: every vertex pair the identification tables name is still one point of AT (each instance's
+// image of it agrees), so every related copy moved, and was inserted, like the vertex itself.
+// A refusal the operation documents (std::invalid_argument
 // for a bad expression, AdaptationLimit for the round cap) is fine; any other exception, a failed
 // check, a crash or a hang is a finding.
 #include "symmesh/adapt/templated_mesh_adaptation.h"
@@ -84,8 +87,34 @@ const std::vector<Seed>& seeds() {
   return all;
 }
 
+/// Every identified pair (template vertex a of instance i, b of instance j) is one point of AT:
+/// T_i(a) and T_j(b) agree up to the rounding of the two transformations.
+bool identified_points_agree(const TemplatedMeshCompactSvb& t) {
+  const int d = t.templated.point_dimension;
+  std::vector<std::pair<std::size_t, std::size_t>> where; // instance -> (template, local)
+  for (std::size_t ti = 0; ti < t.templated.templates.size(); ++ti)
+    for (std::size_t k = 0; k < t.templated.templates[ti].instance_count(); ++k)
+      where.emplace_back(ti, k);
+  const auto image = [&](std::size_t instance, symmesh::mesh::IndexType v, double* out) {
+    const auto& mt = t.templated.templates[where[instance].first];
+    const auto& f =
+        t.templated.transformations[std::size_t(mt.transformation_indices[where[instance].second])];
+    f.apply(&mt.mesh.vertex_coords[std::size_t(v) * std::size_t(d)], out);
+  };
+  for (const auto& id : t.identifications)
+    for (const auto& pair : t.tables[std::size_t(id.table)].pairs) {
+      double x[3], y[3];
+      image(std::size_t(id.from_instance), pair.first, x);
+      image(std::size_t(id.to_instance), pair.second, y);
+      for (int k = 0; k < d; ++k)
+        if (std::abs(x[k] - y[k]) > 1e-9 * (1 + std::abs(x[k]))) return false;
+    }
+  return true;
+}
+
 void check(const TemplatedMeshCompactSvb& t, const Seed& s) {
   if (!t.is_valid()) __builtin_trap();
+  if (!identified_points_agree(t)) __builtin_trap();
   if (!symmesh::adapt::certify_conformity(t, s.boundary).holds) __builtin_trap();
   if (std::abs(measure_of(t) - s.measure) > 1e-9 * std::max(1.0, s.measure)) __builtin_trap();
 }
