@@ -41,7 +41,7 @@ copy
 sed 's/RegionInterface.Eq26EqualsEq25/RegionInterface.NoSuchTest/' "$ROOT/spec/traceability.md" >"$table"
 expect "a test that does not exist is named" 1 "RegionInterface.NoSuchTest"
 copy
-sed 's/not implemented: issue 18 — only the region/not implemented — only the region/' \
+sed 's/not implemented: issue 18 (`--method merge` is planar/not implemented (`--method merge` is planar/' \
   "$ROOT/spec/traceability.md" >"$table"
 expect "a 'not implemented' without its issue is named" 1 "must name the open issue"
 [ "$fails" = 0 ] && echo "5 passed, 0 failed" || { echo "$fails failed"; exit 1; }
