@@ -1406,9 +1406,11 @@ std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& 
     if (flat.empty()) break;
     std::map<std::size_t, std::set<IndexType>> gone;
     std::map<std::size_t, std::vector<std::array<double, 3>>> added;
+    std::map<std::size_t, std::set<IndexType>> boundary; // per template, its boundary vertices
     for (const auto& [t, ci] : flat) {
-      std::set<IndexType> on;
-      for (const auto& f : surface_of(s.w[t])) on.insert(f.begin(), f.end());
+      if (!boundary.count(t))
+        for (const auto& f : surface_of(s.w[t])) boundary[t].insert(f.begin(), f.end());
+      const auto& on = boundary[t];
       const Cell& c = s.w[t].cells[std::size_t(ci)];
       bool interior = false;
       for (IndexType v : c)
