@@ -41,7 +41,7 @@ copy
 sed 's/RegionInterface.Eq26EqualsEq25/RegionInterface.NoSuchTest/' "$ROOT/spec/traceability.md" >"$table"
 expect "a test that does not exist is named" 1 "RegionInterface.NoSuchTest"
 copy
-sed 's/not implemented: issue 18 (`--method merge` is planar/not implemented (`--method merge` is planar/' \
+sed 's/^| Alg 5.4 line-line intersection (3D interface merging, Sec 5.1.1; with Algs 5.1-5.3 on surfaces) | /| Alg 5.4 line-line intersection | not implemented (3D) | /' \
   "$ROOT/spec/traceability.md" >"$table"
 expect "a 'not implemented' without its issue is named" 1 "must name the open issue"
 [ "$fails" = 0 ] && echo "5 passed, 0 failed" || { echo "$fails failed"; exit 1; }

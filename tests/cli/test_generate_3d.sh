@@ -145,6 +145,8 @@ print(72 - 4 * 2 * area, 120 - 8 * area + 4 * 2 * perimeter)") ;;
   esac
   size=0.15; [ "$name" = multi-tsv ] && size=0.3
   generate "$name" "$TMP/${name}_input.json" "$v" "$a" auto msh "$size"
+  # Section 5.1.1 in 3D: every face meshed on its own, the interfaces merged (Algorithms 5.2-5.4).
+  generate "${name}_merge" "$TMP/${name}_input.json" "$v" "$a" merge vtu "$size"
 done
 $PY -c "import json,sys; assert json.load(open(sys.argv[1]))['method'] == 'reflective'" \
   "$TMP/finfet.json" && pass "auto runs the reflective method on the FinFET" \

@@ -109,7 +109,8 @@ void add_generate(CLI::App& app, int& exit_code) {
                   "3D: auto, bpp "
                   "(Algorithm 5.7), rotational, reflective, combined, conventional (TetGen on the "
                   "whole geometry), gmsh (Gmsh 3D Delaunay on the whole geometry, the same "
-                  "surfaces)")
+                  "surfaces), merge (every face of every template surface-meshed on its own, the "
+                  "interfaces merged by Algorithms 5.2-5.4, TetGen inside each template)")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->out,
                   "structure instance: .vtu (binary, appended), .msh (4.1 binary) or .mesh "

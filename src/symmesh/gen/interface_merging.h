@@ -29,4 +29,15 @@ GenerationResult generate_merge(const core::TemplatedStructure<Exact, 2>& x,
 GenerationResult generate_merge(const core::TemplatedStructure<support::LazyCyclotomic, 2>& x,
                                 const GenerationOptions& o);
 
+/// Section 5.1.1 in 3D (interface_merging_3d.cpp, spec/generation.md#merge-3d): every 2-face of
+/// every template surface-meshed on its own, the interfaces merged exactly (Algorithm 5.2, then
+/// the overlay of Algorithms 5.3/5.4), TetGen inside each template.
+/// \pre x is a templated geometry in space; o.size > 0. Throws std::invalid_argument for other
+/// input, MeshingError when TetGen fails or changes a boundary, MergeError when the overlay does
+/// not settle within its rounds (naming the interface).
+GenerationResult generate_merge(const core::TemplatedStructure<Exact, 3>& x,
+                                const GenerationOptions& o);
+GenerationResult generate_merge(const core::TemplatedStructure<support::LazyCyclotomic, 3>& x,
+                                const GenerationOptions& o);
+
 } // namespace symmesh::gen

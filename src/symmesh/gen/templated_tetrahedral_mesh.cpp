@@ -5,9 +5,9 @@
 // The surface stage is in surface_meshes_3d.h, the certificate in certificate_3d.h.
 #include "symmesh/gen/templated_tetrahedral_mesh.h"
 
-#include "symmesh/gen/certificate_3d.h"
 #include "symmesh/gen/gmsh_mesher.h"
-#include "symmesh/gen/tetrahedral_mesher.h"
+#include "symmesh/gen/interface_merging.h"
+#include "symmesh/gen/template_meshing_3d.h"
 #include "symmesh/number/cyclotomic_cgal.h"
 
 #include <cmath>
@@ -303,9 +303,6 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   if (!x.all_of_kind(core::TemplateKind::geometry))
     throw std::invalid_argument("Algorithm 5.7 needs geometry templates (\"kind\": \"geometry\")");
-  const auto say = [&](const std::string& s) {
-    if (o.progress) o.progress->message(s);
-  };
   const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
     if (o.progress) o.progress->stage(name, total, unit);
   };
@@ -389,49 +386,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
     return r;
   }
 
-  t0 = Clock::now();
-  f0 = minor_faults();
-  stage("template meshing (TetGen)", x.templates.size(), "templates");
-  auto& tm = r.templated.templated;
-  tm.point_dimension = 3;
-  for (std::size_t i = 0; i < x.templates.size(); ++i) {
-    SurfaceInput s;
-    for (const auto& p : boundaries[i].exact)
-      s.points.push_back({rounded(p[0]), rounded(p[1]), rounded(p[2])});
-    s.triangles = boundaries[i].triangles;
-    TetrahedralMeshingParameters p;
-    p.size = o.size;
-    TetrahedralMeshOutput out;
-    try {
-      out = mesh_domain_3(s, p);
-    } catch (const BoundaryChanged& e) {
-      throw MeshingError("template '" + x.templates[i].name + "'" +
-                         boundary_place(bpp, boundaries[i], i, e.triangle) + ": " + e.what() +
-                         "; nothing written");
-    } catch (const MeshingError& e) {
-      throw MeshingError("template '" + x.templates[i].name + "': " + e.what());
-    }
-    mesh::MeshTemplate t;
-    t.mesh.point_dimension = 3;
-    for (const auto& q : out.points) t.mesh.add_vertex(q.data());
-    for (const auto& c : out.tetrahedra) {
-      const mesh::IndexType v[4] = {mesh::IndexType(c[0]), mesh::IndexType(c[1]),
-                                    mesh::IndexType(c[2]), mesh::IndexType(c[3])};
-      t.mesh.add_cell(mesh::ElementType::tetrahedron, v);
-    }
-    for (const auto& inst : x.instances[i]) {
-      t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
-      t.region_ids.push_back(mesh::RegionIdType(inst.region));
-      tm.transformations.push_back(support::to_double_transformation<3>(inst.transformation));
-    }
-    say("template " + std::to_string(i + 1) + "/" + std::to_string(x.templates.size()) + " ('" +
-        x.templates[i].name + "'): " + std::to_string(t.mesh.cell_count()) + " tetrahedra, " +
-        std::to_string(boundaries[i].triangles.size()) + " boundary triangles");
-    tm.templates.push_back(std::move(t));
-    if (o.progress) o.progress->set_done(i + 1);
-  }
-  r.timings.template_meshing = seconds_since(t0);
-  faults.template_meshing = minor_faults() - f0;
+  mesh_templates_3(x, bpp, boundaries, o, r);
 
   support::certificate_stage(o, r, [&] {
     if (o.direct_certificate) return certify_3(x, boundaries);
@@ -482,6 +437,10 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     r = generate_3(x, options, Symmetry::combined);
     r.method = "combined";
     break;
+  case Method::merge:
+    r = generate_merge(x, options);
+    r.method = "merge";
+    break;
   case Method::conventional:
     // The boundary meshes as the templated method makes them (rotational when it applies).
     r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none,
@@ -496,8 +455,8 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     break;
   default:
     throw std::invalid_argument(
-        "--method: only auto, bpp, rotational, reflective, combined, conventional and gmsh "
-        "generate 3D meshes so far (merge and sao are planar; spec/generation.md#alg-5-7)");
+        "--method: only auto, bpp, rotational, reflective, combined, merge, conventional and gmsh "
+        "generate 3D meshes so far (sao is planar; spec/generation.md#alg-5-7)");
   }
   return r;
 }

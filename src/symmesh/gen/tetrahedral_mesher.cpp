@@ -81,7 +81,12 @@ void check_input(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
   for (const auto& q : s.points) {
     if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
       throw MeshingError("a boundary point is not finite");
-    if (!seen.insert(q).second) throw MeshingError("two boundary points coincide");
+    if (!seen.insert(q).second) {
+      std::ostringstream at;
+      at.precision(17);
+      at << "two boundary points coincide at (" << q[0] << ", " << q[1] << ", " << q[2] << ")";
+      throw MeshingError(at.str());
+    }
   }
   for (const auto& t : s.triangles)
     for (std::size_t v : t)
