@@ -36,6 +36,8 @@ bench: deps
 	bash bench/run_lemma42_ngon.sh $(BENCH_BUILD)/bench/bench_lemma42_ngon docs/benchmarks
 	/usr/bin/python3 bench/generate_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
+	/usr/bin/python3 bench/merge_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
+	/usr/bin/python3 bench/merge_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/gummel.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/fem.py $(BENCH_BUILD)/bench/bench_fem docs/benchmarks
 	/usr/bin/python3 bench/fem_command.py $(BENCH_BUILD)/symmesh docs/benchmarks

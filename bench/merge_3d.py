@@ -34,6 +34,7 @@ from generate_2d import commit, cpu_model  # noqa: E402
 
 OBJECTS = [("cube-halves", (0.3, 0.15)), ("finfet", (0.3, 0.15)), ("tsv-8", (0.3, 0.15)),
            ("tsv-32", (0.3, 0.15)), ("multi-tsv", (0.3,))]
+LOAD = os.getloadavg()[0]
 FIELDS = ["object", "size", "method", "method_run", "repeat", "cells", "seconds_generation",
           "seconds_certificate", "seconds_process", "rss_process_bytes", "min_dihedral_deg",
           "pairs_merged", "points_moved", "points_inserted", "rounds"]
@@ -105,7 +106,8 @@ def summarise(rows, outdir, wall, argv, repeats):
         f"Written by `bench/merge_3d.py` ({' '.join(argv)}) at commit {commit()}, "
         f"{time.strftime('%Y-%m-%d', time.gmtime())}; {wall:.0f} s of wall time.",
         f"- machine: {platform.machine()}, {os.cpu_count()} cores, {cpu_model()}, "
-        f"{platform.platform()}",
+        f"{platform.platform()}; load average at the start {LOAD:.2f} (other processes: the "
+        "ratios are side by side, the absolute times shift with the load)",
         "- every run: `symmesh generate OBJ --size H --method auto|merge -o out.vtu --report "
         "r.json`, the two side by side, repeats interleaved; medians of "
         f"{repeats} repeats. `merge` surface-meshes every face of every template on its own and "
