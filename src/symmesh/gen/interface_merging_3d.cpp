@@ -186,8 +186,8 @@ void triangulate_cell(std::vector<P3<FT>> poly, const P3<FT>& n, bool canonical,
 /// triangulations of the same polygon, positively oriented about n), every overlay cell
 /// triangulated once.
 template <class FT>
-Triangulation<FT> overlay(const Triangulation<FT>& a, const Triangulation<FT>& b,
-                          const P3<FT>& n, bool canonical) {
+Triangulation<FT> overlay(const Triangulation<FT>& a, const Triangulation<FT>& b, const P3<FT>& n,
+                          bool canonical) {
   std::vector<Box> bb;
   for (const auto& t : b) bb.push_back(box_of<FT>(t));
   Triangulation<FT> out;
@@ -369,8 +369,7 @@ template <class FT>
 std::optional<std::string> triangulation_defect(const core::BoundarySubdivision<FT, 3>& sd,
                                                 const SurfaceBoundary<FT>& tb, std::size_t f,
                                                 const std::vector<std::array<std::size_t, 3>>& ids,
-                                                const std::vector<P3<FT>>& exact,
-                                                const P3<FT>& n) {
+                                                const std::vector<P3<FT>>& exact, const P3<FT>& n) {
   std::vector<std::size_t> boundary_ids;
   std::set<std::pair<std::size_t, std::size_t>> outline;
   for (auto s : facet_boundary(sd, tb, f, boundary_ids))
@@ -383,10 +382,11 @@ std::optional<std::string> triangulation_defect(const core::BoundarySubdivision<
   }
   for (const auto& [e, count] : uses)
     if (count != (outline.count(e) ? 1 : 2))
-      return "edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) + ") is used by " +
-             std::to_string(count) + " triangles";
+      return "edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) +
+             ") is used by " + std::to_string(count) + " triangles";
   for (const auto& e : outline)
-    if (!uses.count(e)) return std::string("a line-mesh segment of its outline is no triangle edge");
+    if (!uses.count(e))
+      return std::string("a line-mesh segment of its outline is no triangle edge");
   return std::nullopt;
 }
 
@@ -518,7 +518,8 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
       auto known = free_points<FT>(b, boundaries[p.i]);
       for (const auto& q : free_points<FT>(a, boundaries[p.i])) known.insert(q);
       auto s = overlay<FT>(a, b, n, p.self());
-      for (const auto& q : free_points<FT>(s, boundaries[p.i])) r.merge_insertions += !known.count(q);
+      for (const auto& q : free_points<FT>(s, boundaries[p.i]))
+        r.merge_insertions += !known.count(q);
       if (!p.self()) tri[p.j][p.f] = mapped<FT>(s, p.back, normal[p.j][p.f]);
       b = std::move(s);
     }
@@ -552,8 +553,10 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
       tb.facet_count[f] = tb.exact.size() - tb.facet_first[f];
       if (const auto defect = triangulation_defect<FT>(sds[t], tb, f, ids, tb.exact, normal[t][f]))
         throw MergeError("--method merge: template '" + x.templates[t].name + "', face " +
-                         std::to_string(f) + ": the merged surface mesh is no triangulation of "
-                         "the face: " + *defect);
+                         std::to_string(f) +
+                         ": the merged surface mesh is no triangulation of "
+                         "the face: " +
+                         *defect);
       for (const auto& c : ids) {
         tb.triangles.push_back(c);
         tb.triangle_face.push_back(f);
