@@ -154,6 +154,15 @@ expect_exit 2 "-o that is not .tmesh" -- "$BIN" adapt "$TMP/mosfet.tmesh" --dela
 [ ! -e "$out" ] && [ ! -e "$TMP/none.vtu" ] && pass "no output file for bad input" \
   || fail "an output file was written for bad input"
 
+# Outputs appear together or not at all (spec/outputs.md#atomic-files): a --report that cannot be
+# written (its directory is missing) leaves neither -o nor --vtu behind.
+expect_exit 2 "--report in a missing directory" -- "$BIN" adapt "$TMP/mosfet.tmesh" --smooth 1 \
+  -o "$TMP/group.tmesh" --vtu "$TMP/group.vtu" --report "$TMP/no-such-dir/r.json" --quiet
+grep -q "no-such-dir/r.json: cannot write" "$TMP/stderr" && [ "$(wc -l < "$TMP/stderr")" -eq 1 ] \
+  && pass "the message names the report" || fail "message: $(cat "$TMP/stderr")"
+[ -z "$(ls "$TMP" | grep '^group\.')" ] && pass "no -o, --vtu or .part file when --report fails" \
+  || fail "left behind: $(ls "$TMP" | grep '^group\.')"
+
 # The round cap of Technique 5.8 ends in exit 1 naming the edge, not in a hang: the refined
 # mosfet needs a round of interface insertions, and --max-rounds 0 allows flips only.
 "$BIN" adapt "$TMP/mosfet.tmesh" --refine-where "x > 0" -o "$TMP/mr.tmesh" --quiet

@@ -101,6 +101,12 @@ expect_exit 2 "--compress with .msh" -- "$BIN" generate "$TMP/mosfet.json" --siz
 expect_exit 2 "--size nan" -- "$BIN" generate "$TMP/mosfet.json" --size nan -o "$TMP/n.vtu"
 [ ! -e "$TMP/a.vtu" ] && [ ! -e "$TMP/c.msh" ] && [ ! -e "$TMP/n.vtu" ] && pass "no file for a bad option" || fail "file written for a bad option"
 
+# -o, --templated and --report appear together or not at all (spec/outputs.md#atomic-files).
+expect_exit 2 "--report in a missing directory" -- "$BIN" generate "$TMP/mosfet.json" --size 0.5 \
+  -o "$TMP/group.vtu" --templated "$TMP/group.tmesh" --report "$TMP/no-such-dir/r.json" --quiet
+[ -z "$(ls "$TMP" | grep '^group\.')" ] && pass "no -o, --templated or .part file when --report fails" \
+  || fail "left behind: $(ls "$TMP" | grep '^group\.')"
+
 # A stage longer than 2 s shows progress lines with counts at least every 2 s (conventional
 # meshing of the 128-gon at ~8e5 triangles takes several seconds on the CI machine).
 "$BIN" example ngon-slice-128 -o "$TMP/n128.json"

@@ -155,6 +155,7 @@ int run_adapt(const AdaptOptions& o) {
     print_error("adapt: " + std::string(e.what()));
     return negative;
   }
+  io::OutputGroup outputs; // all of -o, --vtu and --report, or none of them
   io::write_tmesh(t, o.out);
   if (!o.vtu.empty()) {
     const mesh::StructureInstance at(t);
@@ -167,6 +168,7 @@ int run_adapt(const AdaptOptions& o) {
     report["peak_rss_bytes"] = peak_rss_bytes();
     io::write_file_atomically(o.report, report.dump(2) + "\n");
   }
+  outputs.commit();
   say("wrote " + o.out + (o.vtu.empty() ? "" : " and " + o.vtu));
   return ok;
 }

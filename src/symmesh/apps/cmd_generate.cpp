@@ -3,6 +3,7 @@
 //                  [--templated OUT.tmesh] [--report REPORT.json] [--quiet]
 #include "symmesh/api/generate_run.h"
 #include "symmesh/apps/commands.h"
+#include "symmesh/io/atomic_file.h"
 #include "symmesh/io/mesh_writers.h"
 #include "symmesh/io/templated_mesh_file.h"
 #include "symmesh/mesh/progress.h"
@@ -10,7 +11,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -64,14 +64,15 @@ int run_generate(GenerateOptions& o) {
   w.ascii = o.ascii;
   w.compress = o.compress;
   w.progress = progress.get();
+  io::OutputGroup outputs; // all of -o, --templated and --report, or none of them
   if (!o.out.empty()) io::write_mesh_file(at, o.out, w);
   if (!o.templated.empty()) io::write_tmesh(r.templated, o.templated);
   const double write_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
-  if (!o.report.empty()) {
-    std::ofstream os(o.report);
-    os << api::generation_report(r, o.run, seconds, write_seconds).dump(2) << "\n";
-  }
+  if (!o.report.empty())
+    io::write_file_atomically(
+        o.report, api::generation_report(r, o.run, seconds, write_seconds).dump(2) + "\n");
+  outputs.commit();
   const bool volumetric = r.templated.templated.point_dimension == 3;
   if (progress)
     progress->message(

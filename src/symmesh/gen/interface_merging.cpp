@@ -252,12 +252,7 @@ bool moves_valid(const std::vector<Move<FT>>& moves,
 
 template <class FT>
 GenerationResult merge(const core::TemplatedStructure<FT, 2>& x, const GenerationOptions& o) {
-  if (!(o.size > 0) || !std::isfinite(o.size))
-    throw std::invalid_argument("--size must be a positive number");
-  std::ostringstream why;
-  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
-  if (!x.all_of_kind(core::TemplateKind::geometry))
-    throw std::invalid_argument("--method merge needs geometry templates (\"kind\": \"geometry\")");
+  support::input_stage(x, o, "--method merge");
   const auto say = [&](const std::string& s) {
     if (o.progress) o.progress->message(s);
   };

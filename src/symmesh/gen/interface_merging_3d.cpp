@@ -392,13 +392,7 @@ std::optional<std::string> triangulation_defect(const core::BoundarySubdivision<
 
 template <class FT>
 GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o) {
-  if (!(o.size > 0) || !std::isfinite(o.size))
-    throw std::invalid_argument("--size must be a positive number");
-  if (o.progress) o.progress->stage("templates well-formed", 0, "");
-  std::ostringstream why;
-  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
-  if (!x.all_of_kind(core::TemplateKind::geometry))
-    throw std::invalid_argument("--method merge needs geometry templates (\"kind\": \"geometry\")");
+  support::input_stage(x, o, "--method merge");
   const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
     if (o.progress) o.progress->stage(name, total, unit);
   };

@@ -1,6 +1,7 @@
 /// The stages of the generation pipeline that are the same code in 2D and 3D, with their timing,
 /// page faults and progress lines — spec/generation.md#pipeline: the boundary patch partition
-/// (Algorithm 4.1) and the Lemma 4.2 certificate step (whose checker is dimension-specific).
+/// (Algorithm 4.1) and the Lemma 4.2 certificate step, after the input checks every generator
+/// makes first (whose checker is dimension-specific).
 /// Internal to gen/.
 #pragma once
 #include "symmesh/core/boundary_patch_partition.h"
@@ -8,10 +9,29 @@
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/templated_triangle_mesh.h"
 
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace symmesh::gen::support {
+
+/// The preconditions every generator's exact steps rely on: a finite positive size, a
+/// well-formed structure (Definition 4.1) and, when `method` is not empty, geometry templates
+/// only (`method` names the algorithm in the message, since each states its own requirement).
+/// Throws std::invalid_argument with the one line the CLI prints before exiting 2.
+template <class FT, int D>
+void input_stage(const core::TemplatedStructure<FT, D>& x, const GenerationOptions& o,
+                 const std::string& method) {
+  if (!(o.size > 0) || !std::isfinite(o.size))
+    throw std::invalid_argument("--size must be a positive number");
+  if (o.progress) o.progress->stage("templates well-formed", 0, "");
+  std::ostringstream why;
+  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  if (!method.empty() && !x.all_of_kind(core::TemplateKind::geometry))
+    throw std::invalid_argument(method + " needs geometry templates (\"kind\": \"geometry\")");
+}
 
 /// Algorithm 4.1 on `s` (x itself, or the copies a symmetric method needs), timed with the
 /// method's symmetry check that preceded it (`symmetry_seconds`, `symmetry_faults`).

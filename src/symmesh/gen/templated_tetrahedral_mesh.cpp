@@ -296,13 +296,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
                             Symmetry symmetry = Symmetry::none, Whole whole = Whole::no) {
   const bool rotational = symmetry == Symmetry::rotational;
   const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
-  if (!(o.size > 0) || !std::isfinite(o.size))
-    throw std::invalid_argument("--size must be a positive number");
-  if (o.progress) o.progress->stage("templates well-formed", 0, "");
-  std::ostringstream why;
-  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
-  if (!x.all_of_kind(core::TemplateKind::geometry))
-    throw std::invalid_argument("Algorithm 5.7 needs geometry templates (\"kind\": \"geometry\")");
+  support::input_stage(x, o, "Algorithm 5.7");
   const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
     if (o.progress) o.progress->stage(name, total, unit);
   };

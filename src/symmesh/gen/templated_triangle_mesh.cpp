@@ -329,12 +329,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
                           Symmetry symmetry = Symmetry::none, bool refine_for_angle = false) {
   const bool rotational = symmetry == Symmetry::rotational;
   const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
-  if (!(o.size > 0) || !std::isfinite(o.size))
-    throw std::invalid_argument("--size must be a positive number");
-  std::ostringstream why;
-  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
-  if (!x.all_of_kind(core::TemplateKind::geometry))
-    throw std::invalid_argument("Algorithm 5.6 needs geometry templates (\"kind\": \"geometry\")");
+  support::input_stage(x, o, "Algorithm 5.6");
   std::string smallest_angle;
   if (refine_for_angle) {
     const auto a = smallest_input_angle(x);
@@ -475,10 +470,7 @@ using support::as_region_templates;
 template <class FT>
 GenerationResult generate_gmsh(const core::TemplatedStructure<FT, 2>& x,
                                const GenerationOptions& o) {
-  if (!(o.size > 0) || !std::isfinite(o.size))
-    throw std::invalid_argument("--size must be a positive number");
-  std::ostringstream why;
-  if (!x.is_well_formed(&why)) throw std::invalid_argument(why.str());
+  support::input_stage(x, o, "");
   const auto whole = as_region_templates(x);
   PlanarRegions in;
   std::map<core::Point<FT, 2>, std::size_t, core::PointLess<FT, 2>> index;
