@@ -436,6 +436,46 @@ rc::Gen<GeneratedStructure<D>> encroached_reflection() {
   });
 }
 
+/// Four tetrahedra around the axis a b = (p, 0, h), (p, 0, -k) of an octahedron over the ring
+/// c0..c3 = (x0, 0, 0), (0, y1, 0), c2, (0, -y3, 0) (vertex ids 0..5). Convex: p = 0 and
+/// c2 = (-x2, 0, 0); reflex: 0 < c2 = (r, 0, 0) < p < x0, so the ring's diagonal c1 c3 (x = 0)
+/// leaves it and only c0 c2 may be flipped to. Instanced as is and reflected: across its face
+/// (a, c0, c1) when convex (the copies share that face), across z = h when reflex (they share a).
+rc::Gen<GeneratedStructure<3>> four_tetrahedra_around_an_axis(bool reflex) {
+  return rc::gen::exec([reflex] {
+    const Exact x0(pick(2, 4)), y1 = rational(pick(1, 6), 2), y3 = rational(pick(1, 6), 2);
+    const Exact h = rational(pick(1, 6), 2), k = rational(pick(1, 6), 2);
+    const Exact p = reflex ? Exact(1) : Exact(0);
+    const Exact c2 = reflex ? rational(1, pick(2, 4)) : -Exact(pick(1, 4));
+    const std::vector<Point<3>> pts{
+        make_point<3>({p, Exact(0), h}),         make_point<3>({p, Exact(0), -k}),
+        make_point<3>({x0, Exact(0), Exact(0)}), make_point<3>({Exact(0), y1, Exact(0)}),
+        make_point<3>({c2, Exact(0), Exact(0)}), make_point<3>({Exact(0), -y3, Exact(0)})};
+    std::vector<Cell> cells;
+    for (core::VertexId j = 0; j < 4; ++j) cells.push_back({0, 1, 2 + j, 2 + (j + 1) % 4});
+    const auto mesh = complex_from_cells<3>(pts, cells, false);
+    Point<3> n = core::zero_point<Exact, 3>();
+    Exact d(0);
+    if (reflex) {
+      n[2] = 1;
+      d = h;
+    } else {
+      const auto u = pts[2] - pts[0], v = pts[3] - pts[0];
+      n[0] = u[1] * v[2] - u[2] * v[1];
+      n[1] = u[2] * v[0] - u[0] * v[2];
+      n[2] = u[0] * v[1] - u[1] * v[0];
+      d = core::dot<Exact, 3>(n, pts[0]);
+    }
+    GeneratedStructure<3> g;
+    g.x = single_template<3>(mesh, {Motion<3>(), Motion<3>::reflection(n, d)}, {1, 1});
+    g.tier = Tier::valid_templated_mesh;
+    g.recipe = std::string(reflex ? "reflex" : "convex") +
+               " octahedron of four tetrahedra around " + text<3>(pts[0]) + "-" + text<3>(pts[1]) +
+               ", ring x0=" + text(x0) + " y1=" + text(y1) + " c2=" + text(c2) + " y3=" + text(y3);
+    return g;
+  });
+}
+
 // ----- failure records ---------------------------------------------------------------------------
 
 namespace {

@@ -202,6 +202,11 @@ rc::Gen<GeneratedStructure<D>> delaunay_templated_mesh();
 template <int D>
 rc::Gen<GeneratedStructure<D>> encroached_reflection();
 
+/// Section 5.2.3's 4-4 flip: one template of four tetrahedra around the axis (vertices 0, 1) of
+/// an octahedron over the ring of vertices 2..5, instanced twice (sharing a face when the ring is
+/// convex, a vertex when it is reflex). A reflex ring keeps only the diagonal 2-4 inside.
+rc::Gen<GeneratedStructure<3>> four_tetrahedra_around_an_axis(bool reflex);
+
 /// Tiers. valid: reflective, orthogonal reflections, translation grids, each possibly split into
 /// 2-3 templates by cell centroid and moved by one global rigid motion. structure: valid plus
 /// Figure 4.4 families. any: structure plus overlapping instances (Eq. 4.2 violated).

@@ -83,6 +83,37 @@ $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['after']['smal
   "$TMP/tsv8.i.json" && pass "tsv-8 --improve keeps or raises the smallest dihedral angle" \
   || fail "tsv-8 --improve lowered the smallest dihedral angle"
 
+# The 4-4 flip (Section 5.2.3) in --improve: an octahedron of four tetrahedra around its long
+# axis (a rhombus ring) becomes the four around the rhombus's short diagonal, which doubles the
+# smallest dihedral angle; nothing else can improve it (no 2-3 or 3-2 flip, no free vertex).
+$PY - "$TMP/octa.tmesh" <<'PYEOF'
+import json, sys
+P = [[0, 0, 1], [0, 0, -1], [2, 0, 0], [0, 0.5, 0], [-2, 0, 0], [0, -0.5, 0]]
+def det(c):
+    u, v, w = [[P[c[k]][j] - P[c[0]][j] for j in range(3)] for k in (1, 2, 3)]
+    return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])
+cells = []
+for i in range(4):
+    c = [0, 1, 2 + i, 2 + (i + 1) % 4]
+    if det(c) < 0:
+        c[2], c[3] = c[3], c[2]
+    cells.append(c)
+json.dump({"symmesh": "templated-mesh/1", "dimension": 3,
+           "templates": [{"vertices": P, "cells": cells, "instances": [{"transformation": 0, "region": 1}]}],
+           "transformations": [{"matrix": [1, 0, 0, 0, 1, 0, 0, 0, 1], "translation": [0, 0, 0]}],
+           "identification_tables": [], "identifications": []}, open(sys.argv[1], "w"))
+PYEOF
+"$BIN" adapt "$TMP/octa.tmesh" --improve -o "$TMP/octa.i.tmesh" --report "$TMP/octa.i.json" --quiet
+$PY -c "
+import json, sys
+r, m = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+cells = m['templates'][0]['cells']
+assert r['steps'][0]['flips'] == 1 and r['steps'][0]['moves'] == 0, r['steps']
+assert len(cells) == 4 and all(3 in c and 5 in c for c in cells), cells
+assert r['after']['smallest_angle_deg'] > 1.9 * r['before']['smallest_angle_deg'], r
+" "$TMP/octa.i.json" "$TMP/octa.i.tmesh" && pass "--improve makes the 4-4 flip around the short diagonal" \
+  || fail "no 4-4 flip: $(cat "$TMP/octa.i.json")"
+
 # 3D smoothing of boundary vertices (Eq. 5.1) and quality flips (Section 5.2.6): the FinFET and
 # the cube halves, smoothed and improved, keep the volume and boundary area of the generated mesh
 # (mesh_measure.py on its .vtu), conform, and --improve alone does not lower the smallest
@@ -96,7 +127,7 @@ for name in finfet cube-halves; do
     if msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.a.vtu" "$TMP/$name.a.json" "$v" "$a" 2>&1); then
       pass "$name smoothed + improved: $(echo "$msg" | tail -1)"; else fail "$name smoothed + improved: $msg"; fi
     $PY -c "import json,sys; s=json.load(open(sys.argv[1]))['steps']; assert s[0]['boundary_moves'] > 0 and s[1]['flips'] > 0, s" \
-      "$TMP/$name.a.json" && pass "$name: boundary vertices slid and 2-3/3-2 flips were made" \
+      "$TMP/$name.a.json" && pass "$name: boundary vertices slid and 3D flips (2-3/3-2/4-4) were made" \
       || fail "$name: no boundary move or no 3D flip"
   else fail "$name: adapt failed"; fi
   "$BIN" adapt "$TMP/$name.tmesh" --improve -o "$TMP/$name.i.tmesh" --report "$TMP/$name.i.json" --quiet

@@ -1,7 +1,7 @@
 /// Section 5.2.3: flips inside mesh templates — spec/adaptation.md#flips
 ///
 /// A flip replaces the cells around an interior face of a template by another triangulation of
-/// their union: 2-2 across an edge in 2D, 2-3 across a triangle and 3-2 around an edge in 3D.
+/// their union: 2-2 across an edge in 2D, 2-3 across a triangle, 3-2 and 4-4 around an edge in 3D.
 /// Inside a template no boundary facet changes, so the template boundaries — and with them every
 /// instance interface (Lemma 4.2) — stay as they were, and AT(Γ) changes by the same flip at
 /// every instance of the template. A face on the template boundary has cells of another
@@ -10,6 +10,7 @@
 #pragma once
 #include "symmesh/adapt/template_cells.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -135,6 +136,62 @@ FlipResult flip_3_2(TemplatedStructure<FT, 3>& x, std::size_t i, const Simplex& 
   r.removed = around;
   r.added = {simplex_of({uvw[0], uvw[1], uvw[2], e.v[0]}),
              simplex_of({uvw[0], uvw[1], uvw[2], e.v[1]})};
+  replace_cells(x, i, r.removed, r.added);
+  return r;
+}
+
+/// The 4-4 flip of interior edge e = (a, b) of a tetrahedral template with exactly four
+/// tetrahedra around it, whose far edges close the ring c0 c1 c2 c3: the octahedron they fill
+/// is cut along the ring's diagonal c_k c_{k+2} instead (`diagonal` k = 0 or 1), into
+/// (a, c_k, c_{k+1}, c_{k+2}), (a, c_k, c_{k+2}, c_{k+3}), (b, ...) likewise.
+/// With the four old cells oriented alike around e (sign s of (a, b, c_j, c_{j+1})), the chain
+/// of the new cells (a, c_k, c_{k+1}, c_{k+2}) + (a, c_k, c_{k+2}, c_{k+3}) + (b, c_k, c_{k+2},
+/// c_{k+1}) + (b, c_k, c_{k+3}, c_{k+2}) has the same boundary; when each of them has sign s
+/// too, they fill the same octahedron once, so the flip is made exactly then.
+/// Refused: e is no edge, e lies on the template boundary, e has not exactly four tetrahedra
+/// around it, their far edges do not close a ring, or a new cell would be flat or inverted.
+template <class FT>
+FlipResult flip_4_4(TemplatedStructure<FT, 3>& x, std::size_t i, const Simplex& e, int diagonal) {
+  const auto& m = x.templates.at(i).mesh;
+  if (e.dim() != 1 || !m.contains(e)) return detail::refuse<FT, 3>("not an edge of the template");
+  if (on_boundary(m, e))
+    return detail::refuse<FT, 3>("the edge is on the template boundary (Figure 5.13)");
+  const auto around = co_cells(m, e);
+  if (around.size() != 4)
+    return detail::refuse<FT, 3>("the edge has " + std::to_string(around.size()) +
+                                 " tetrahedra around it, not 4");
+  std::map<VertexId, std::vector<VertexId>> next;
+  for (const auto& c : around) {
+    const auto far = opposite_vertices(c, e);
+    next[far[0]].push_back(far[1]);
+    next[far[1]].push_back(far[0]);
+  }
+  if (next.size() != 4) return detail::refuse<FT, 3>("the edge's link is not a ring of four");
+  for (const auto& link : next)
+    if (link.second.size() != 2) return detail::refuse<FT, 3>("the edge's link is not a ring");
+  std::vector<VertexId> ring{next.begin()->first, next.begin()->second[0]};
+  while (ring.size() < 4) {
+    const auto& n = next[ring.back()];
+    ring.push_back(n[0] != ring[ring.size() - 2] ? n[0] : n[1]);
+  }
+  const VertexId a = e.v[0], b = e.v[1];
+  const auto sign = [&](std::vector<VertexId> ids) {
+    return orientation<FT, 3>(detail::points_of(m, ids));
+  };
+  const int s = sign({a, b, ring[0], ring[1]});
+  for (std::size_t j = 1; j < 4; ++j)
+    if (sign({a, b, ring[j], ring[(j + 1) % 4]}) != s)
+      return detail::refuse<FT, 3>("the tetrahedra around the edge are not oriented alike");
+  const auto c = [&](int j) { return ring[std::size_t((diagonal + j) % 4)]; };
+  const std::vector<std::vector<VertexId>> fresh{
+      {a, c(0), c(1), c(2)}, {a, c(0), c(2), c(3)}, {b, c(0), c(2), c(1)}, {b, c(0), c(3), c(2)}};
+  for (const auto& ids : fresh)
+    if (sign(ids) != s)
+      return detail::refuse<FT, 3>("the diagonal leaves the octahedron (a new cell is flat or "
+                                   "inverted)");
+  FlipResult r;
+  r.removed = around;
+  for (const auto& ids : fresh) r.added.push_back(simplex_of(ids));
   replace_cells(x, i, r.removed, r.added);
   return r;
 }

@@ -452,11 +452,16 @@ bool quality_flip_3_2(Work& w, IndexType ci, int p, int q, const CellTest* also 
   return true;
 }
 
-/// Section 5.2.6 in 3D: 2-3 and 3-2 flips inside a tetrahedral template, each made only when it
-/// raises the smallest dihedral angle of the cells it replaces. Facets on the template boundary
-/// are never flipped (Section 5.2.3), so every instance changes alike. Each flip raises the
-/// sorted vector of cell qualities, so the sweeps end. Returns the flip count.
+bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok, std::size_t largest_ring,
+                 bool improve);
+
+/// Section 5.2.6 in 3D: 2-3, 3-2 and 4-4 flips inside a tetrahedral template, each made only
+/// when it raises the smallest dihedral angle of the cells it replaces. Facets on the template
+/// boundary are never flipped (Section 5.2.3; a 4-4 flip needs a closed ring of four cells, so
+/// its edge is template-interior), so every instance changes alike. Each flip raises the sorted
+/// vector of cell qualities, so the sweeps end. Returns the flip count.
 std::size_t quality_flips_3d(Work& w) {
+  static const CellTest any = [](const Cell&) { return true; };
   std::size_t flips = 0;
   const std::size_t cap = 64 * (w.cells.size() + 16);
   for (bool again = true; again;) {
@@ -466,6 +471,9 @@ std::size_t quality_flips_3d(Work& w) {
       for (int skip = 0; skip < 4 && !flipped; ++skip) flipped = quality_flip_2_3(w, ci, skip);
       for (int p = 0; p < 4 && !flipped; ++p)
         for (int q = p + 1; q < 4 && !flipped; ++q) flipped = quality_flip_3_2(w, ci, p, q);
+      for (int p = 0; p < 4 && !flipped; ++p)
+        for (int q = p + 1; q < 4 && !flipped; ++q)
+          flipped = remove_edge(w, ci, p, q, any, 4, true);
       if (!flipped) continue;
       again = true;
       if (++flips > cap) throw std::logic_error("quality flips did not end (a defect)");
@@ -1102,16 +1110,18 @@ bool robustly_positive(const Work& w, const Cell& c) {
   return dot3(cross3(u, v), x) > 1e-9 * longest * longest * longest;
 }
 
-/// Edge removal (generalising the 3-2 flip): the k cells around edge {d, e} of cell ci, whose
-/// far vertices close a ring, become the 2(k - 2) cells of a fan of the ring joined to d and to
-/// e — the fan from the first ring vertex for which every fan triangle separates d from e with
-/// one orientation, the new facets are new, and every new cell passes `ok`. Only
+/// Edge removal (generalising the 3-2 flip; k = 4 is the 4-4 flip): the k cells around edge
+/// {d, e} of cell ci (3 <= k <= largest_ring), whose far vertices close a ring, become the
+/// 2(k - 2) cells of a fan of the ring joined to d and to e — the fan from the first ring vertex
+/// for which every fan triangle separates d from e with one orientation, the new facets are new,
+/// every new cell passes `ok` and, with `improve`, the smallest dihedral angle grows. Only
 /// template-interior edges qualify (a closed ring).
-bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok) {
+bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok, std::size_t largest_ring,
+                 bool improve) {
   const Cell c0 = w.cells[std::size_t(ci)];
   const IndexType d = c0[std::size_t(p)], e = c0[std::size_t(q)];
   const auto around = w.cells_with({d, e});
-  if (around.size() < 3 || around.size() > 6) return false;
+  if (around.size() < 3 || around.size() > largest_ring) return false;
   // Ring order: consecutive cells share a facet {d, e, r}.
   std::map<IndexType, std::vector<IndexType>> next;
   for (IndexType cj : around) {
@@ -1157,10 +1167,9 @@ bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok) {
       valid = valid && ok(c);
       after = std::min(after, cell_quality(w, c));
     }
-    // The count of cells failing `ok` falls by at least one (c0): the removals end.
-    (void)after;
-    (void)before;
-    if (!valid) continue;
+    // Sliver removal: the count of cells failing `ok` falls by at least one (c0), so the
+    // removals end. Quality pass: the smallest dihedral angle of the cells replaced grows.
+    if (!valid || (improve && !(after > before))) continue;
     std::vector<IndexType> slots(around.begin(), around.end());
     std::sort(slots.begin(), slots.end());
     std::size_t used = 0;
@@ -1189,7 +1198,8 @@ std::size_t remove_slivers(Session& s) {
         if (ok(w.cells[std::size_t(ci)])) continue;
         bool flipped = false;
         for (int p = 0; p < 4 && !flipped; ++p)
-          for (int q = p + 1; q < 4 && !flipped; ++q) flipped = remove_edge(w, ci, p, q, ok);
+          for (int q = p + 1; q < 4 && !flipped; ++q)
+            flipped = remove_edge(w, ci, p, q, ok, 6, false);
         for (int skip = 0; skip < 4 && !flipped; ++skip)
           flipped = quality_flip_2_3(w, ci, skip, &ok);
         if (!flipped) continue;
