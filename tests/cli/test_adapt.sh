@@ -194,6 +194,32 @@ grep -q "no-such-dir/r.json: cannot write" "$TMP/stderr" && [ "$(wc -l < "$TMP/s
 [ -z "$(ls "$TMP" | grep '^group\.')" ] && pass "no -o, --vtu or .part file when --report fails" \
   || fail "left behind: $(ls "$TMP" | grep '^group\.')"
 
+# Protection balls against ping-pong encroachment (Section 5.2.5, Figure 5.17): a triangle
+# template with an acute corner x (legs 1 and 0.7) reflected across both legs. Bisecting at
+# midpoints never ends below 45 degrees (the legs' pieces at x keep encroaching on each other;
+# before protection balls each case hit the 64-round cap); splits on concentric shells around x
+# end within a few rounds with a Delaunay structure instance.
+for angle in 10 20 44; do
+  $PY - "$angle" "$TMP/wedge$angle.tmesh" <<'PYEOF'
+import json, math, sys
+a = math.radians(float(sys.argv[1]))
+refl = lambda t: {"matrix": [math.cos(2 * t), math.sin(2 * t), math.sin(2 * t), -math.cos(2 * t)], "translation": [0.0, 0.0]}
+json.dump({"symmesh": "templated-mesh/1", "dimension": 2,
+           "templates": [{"vertices": [[0.0, 0.0], [1.0, 0.0], [0.7 * math.cos(a), 0.7 * math.sin(a)]],
+                          "cells": [[0, 1, 2]],
+                          "instances": [{"transformation": k, "region": 1} for k in range(3)]}],
+           "transformations": [{"matrix": [1.0, 0.0, 0.0, 1.0], "translation": [0.0, 0.0]}, refl(0.0), refl(a)],
+           "identification_tables": [{"from_template": 0, "to_template": 0, "pairs": p}
+                                     for p in ([[0, 0], [1, 1]], [[0, 0], [2, 2]], [[0, 0]])],
+           "identifications": [[0, 1, 0], [0, 2, 1], [1, 2, 2]]}, open(sys.argv[2], "w"))
+PYEOF
+  if "$BIN" adapt "$TMP/wedge$angle.tmesh" --delaunay --max-rounds 16 -o "$TMP/wedge$angle.a.tmesh" \
+      --vtu "$TMP/wedge$angle.a.vtu" --report "$TMP/wedge$angle.a.json" --quiet \
+    && msg=$($PY tests/cli/delaunay_check.py "$TMP/wedge$angle.a.vtu" 2>&1); then
+    pass "$angle-degree wedge: Delaunay after $($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][0]['delaunay'])" "$TMP/wedge$angle.a.json") rounds ($msg)"
+  else fail "$angle-degree wedge: $(cat "$TMP/stderr" 2>/dev/null) $msg"; fi
+done
+
 # The round cap of Technique 5.8 ends in exit 1 naming the edge, not in a hang: the refined
 # mosfet needs a round of interface insertions, and --max-rounds 0 allows flips only.
 "$BIN" adapt "$TMP/mosfet.tmesh" --refine-where "x > 0" -o "$TMP/mr.tmesh" --quiet

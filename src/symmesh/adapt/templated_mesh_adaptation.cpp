@@ -277,7 +277,65 @@ void split_edge(Work& w, IndexType a, IndexType b, IndexType m) {
   }
 }
 
-std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges) {
+/// Vertices at the apex of an acute template corner, per template: Technique 5.8's protection
+/// balls (Section 5.2.5, Figure 5.17). Protection is a property of the point of AT, so it is
+/// closed under the identification tables (a corner of one template protects its copies).
+using Protected = std::vector<std::vector<char>>;
+
+/// A boundary vertex protected in a template whose cells meet at it with an angle sum below 90°.
+Protected acute_corners(const Session& s) {
+  Protected out;
+  for (const auto& w : s.w) {
+    std::vector<double> angle(w.vertex_count(), 0);
+    for (const auto& c : w.cells)
+      for (int k = 0; k < 3; ++k) {
+        const double *o = w.p(c[std::size_t(k)]), *a = w.p(c[std::size_t((k + 1) % 3)]),
+                     *b = w.p(c[std::size_t((k + 2) % 3)]);
+        const double u[2] = {a[0] - o[0], a[1] - o[1]}, v[2] = {b[0] - o[0], b[1] - o[1]};
+        angle[std::size_t(c[std::size_t(k)])] += angle_between(u, v, 2);
+      }
+    const auto on = boundary_vertices(w);
+    std::vector<char> acute(w.vertex_count(), 0);
+    for (std::size_t v = 0; v < acute.size(); ++v) acute[v] = on[v] && angle[v] < 90;
+    out.push_back(std::move(acute));
+  }
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& table : s.t.tables)
+      for (const auto& [a, b] : table.pairs) {
+        auto& pa = out[std::size_t(table.from_template)][std::size_t(a)];
+        auto& pb = out[std::size_t(table.to_template)][std::size_t(b)];
+        if (pa != pb) pa = pb = 1, changed = true;
+      }
+  }
+  return out;
+}
+
+/// Where edge {a, b} is split: its midpoint, or — when exactly one end is a protected corner —
+/// the point at the power of two nearest to half the length from that end (concentric shells:
+/// the pieces next to a corner then have power-of-two lengths, so the two sides of an acute
+/// corner end with equal pieces and stop encroaching on each other). The rule only looks at
+/// the length and at which end is protected, which related edges share, so every copy is split
+/// at the same point of AT.
+void split_point(const Work& w, IndexType a, IndexType b, const std::vector<char>* protect,
+                 double* q) {
+  const auto is = [&](IndexType v) {
+    return protect && std::size_t(v) < protect->size() && (*protect)[std::size_t(v)];
+  };
+  double f = 0.5;
+  IndexType from = a, to = b;
+  if (is(a) != is(b)) {
+    if (is(b)) std::swap(from, to);
+    double ll = 0;
+    for (int i = 0; i < w.d; ++i) ll += std::pow(w.p(to)[i] - w.p(from)[i], 2);
+    const double length = std::sqrt(ll);
+    f = std::exp2(std::round(std::log2(length / 2))) / length; // in [0.35, 0.71]
+  }
+  for (int i = 0; i < w.d; ++i) q[i] = w.p(from)[i] + f * (w.p(to)[i] - w.p(from)[i]);
+}
+
+std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges,
+                   const Protected* protect = nullptr) {
   const auto index = index_tables(s.t);
   std::set<TemplateEdge> closure;
   std::vector<TemplateEdge> queue;
@@ -302,7 +360,7 @@ std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges) {
   for (const auto& e : closure) {
     auto& w = s.w[e.t];
     double q[3];
-    for (int i = 0; i < w.d; ++i) q[i] = 0.5 * (w.p(e.a)[i] + w.p(e.b)[i]);
+    split_point(w, e.a, e.b, protect ? &(*protect)[e.t] : nullptr, q);
     const IndexType m = w.add_vertex(q);
     split_edge(w, e.a, e.b, m);
     mid[e] = m;
@@ -1629,6 +1687,7 @@ DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_r
     return r;
   }
   DelaunayReport r;
+  const auto corners = acute_corners(s); // the input's corners; split points never are one
   for (;;) {
     for (auto& w : s.w) r.flips += lawson(w);
     const auto bad = non_tald(s);
@@ -1643,7 +1702,7 @@ DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_r
                             " more) is still not template-aware locally Delaunay (ping-pong "
                             "encroachment, Figure 5.17; raise --max-rounds)");
     }
-    r.bisections += bisect(s, bad);
+    r.bisections += bisect(s, bad, &corners);
     ++r.rounds;
     if (progress) progress->set_done(r.rounds);
   }

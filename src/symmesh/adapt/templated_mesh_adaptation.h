@@ -69,11 +69,13 @@ struct DelaunayReport {
 };
 
 /// Technique 5.8 in the plane: Lawson flips in every template, then, while some interface edge
-/// is not template-aware locally Delaunay, its midpoint is inserted at every related edge and the
-/// templates are flipped again. Then every interior edge of AT is locally Delaunay, so AT is a
-/// constrained Delaunay triangulation of its domain (Delaunay when the domain is convex,
-/// Lemma 4.5). Throws AdaptationLimit naming an offending edge after `max_rounds` rounds
-/// (ping-pong encroachment, Figure 5.17; protection balls are not implemented).
+/// is not template-aware locally Delaunay, a split point is inserted at every related edge and
+/// the templates are flipped again. The split point is the midpoint, or, on an edge with one end
+/// at an acute template corner, the power-of-two distance from that corner nearest to half the
+/// length (protection balls on concentric shells, against the ping-pong encroachment of
+/// Figure 5.17; spec/adaptation.md). Then every interior edge of AT is locally Delaunay, so AT is
+/// a constrained Delaunay triangulation of its domain (Delaunay when the domain is convex,
+/// Lemma 4.5). Throws AdaptationLimit naming an offending edge after `max_rounds` rounds.
 /// \pre t.templated.point_dimension == 2, expand_identifications(t) was applied
 DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
                              mesh::Progress* progress = nullptr);
