@@ -1,5 +1,6 @@
 // Section 5.2 and Technique 5.8 on a generated templated mesh — spec/adaptation.md#tmesh-adaptation
 #include "symmesh/adapt/templated_mesh_adaptation.h"
+#include "symmesh/adapt/adaptation_work.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 #include "symmesh/mesh/structure_instance.h"
 
@@ -19,60 +20,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
-namespace symmesh::adapt {
-namespace {
-using mesh::IndexType;
-using Cell = std::array<IndexType, 4>;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using P2 = Kernel::Point_2;
-using P3 = Kernel::Point_3;
-
-/// One template, editable: coordinates, cells (d + 1 vertices each) and vertex-to-cell incidence.
-struct Work {
-  int d = 2;
-  std::vector<double> x;
-  std::vector<Cell> cells;
-  std::vector<std::vector<IndexType>> inc;
-
-  std::size_t vertex_count() const { return x.size() / std::size_t(d); }
-  const double* p(IndexType v) const { return &x[std::size_t(v) * std::size_t(d)]; }
-  int arity() const { return d + 1; }
-  bool has(const Cell& c, IndexType v) const {
-    for (int k = 0; k < arity(); ++k)
-      if (c[std::size_t(k)] == v) return true;
-    return false;
-  }
-  /// The cells that contain every vertex of `verts`.
-  std::vector<IndexType> cells_with(std::initializer_list<IndexType> verts) const {
-    std::vector<IndexType> out;
-    for (IndexType ci : inc[std::size_t(*verts.begin())]) {
-      bool all = true;
-      for (IndexType v : verts) all = all && has(cells[std::size_t(ci)], v);
-      if (all) out.push_back(ci);
-    }
-    return out;
-  }
-  void set_cell(IndexType ci, const Cell& c) {
-    auto& old = cells[std::size_t(ci)];
-    for (int k = 0; k < arity(); ++k) {
-      auto& list = inc[std::size_t(old[std::size_t(k)])];
-      list.erase(std::find(list.begin(), list.end(), ci));
-    }
-    old = c;
-    for (int k = 0; k < arity(); ++k) inc[std::size_t(c[std::size_t(k)])].push_back(ci);
-  }
-  IndexType add_cell(const Cell& c) {
-    cells.push_back(c);
-    const auto ci = IndexType(cells.size() - 1);
-    for (int k = 0; k < arity(); ++k) inc[std::size_t(c[std::size_t(k)])].push_back(ci);
-    return ci;
-  }
-  IndexType add_vertex(const double* q) {
-    x.insert(x.end(), q, q + d);
-    inc.emplace_back();
-    return IndexType(vertex_count() - 1);
-  }
-};
+namespace symmesh::adapt::work {
 
 std::array<double, 3> sub3(const double* a, const double* b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -92,7 +40,7 @@ P3 p3(const double* q) {
 }
 
 /// Orientation sign of a cell (exact on the doubles), with vertex `moved` read at `at` if given.
-int orientation(const Work& w, const Cell& c, IndexType moved = -1, const double* at = nullptr) {
+int orientation(const Work& w, const Cell& c, IndexType moved, const double* at) {
   const auto q = [&](int k) {
     const IndexType v = c[std::size_t(k)];
     return v == moved ? at : w.p(v);
@@ -109,8 +57,7 @@ double angle_between(const double* u, const double* v, int d) {
 }
 
 /// Smallest angle (triangle) or dihedral angle (tetrahedron) in degrees; 0 for a flat cell.
-double cell_quality(const Work& w, const Cell& c, IndexType moved = -1,
-                    const double* at = nullptr) {
+double cell_quality(const Work& w, const Cell& c, IndexType moved, const double* at) {
   const auto q = [&](int k) {
     const IndexType v = c[std::size_t(k)];
     return v == moved ? at : w.p(v);
@@ -185,59 +132,6 @@ std::vector<char> boundary_vertices(const Work& w) {
   return on;
 }
 
-/// The templates of a templated mesh, editable, and where each global instance comes from.
-struct Session {
-  mesh::TemplatedMeshCompactSvb& t;
-  std::vector<Work> w;
-  std::vector<std::size_t> template_of, local_of;
-
-  explicit Session(mesh::TemplatedMeshCompactSvb& tm) : t(tm) {
-    const int d = t.templated.point_dimension;
-    if (d != 2 && d != 3) throw std::invalid_argument("adaptation needs a 2D or 3D mesh");
-    const auto want = d == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
-    for (std::size_t i = 0; i < t.templated.templates.size(); ++i) {
-      const auto& m = t.templated.templates[i].mesh;
-      Work wk;
-      wk.d = d;
-      wk.x = m.vertex_coords;
-      wk.inc.resize(wk.vertex_count());
-      for (std::size_t c = 0; c < m.cell_count(); ++c) {
-        if (m.cell_types[c] != want)
-          throw std::invalid_argument("templates[" + std::to_string(i) + "].cells[" +
-                                      std::to_string(c) + "]: not a " +
-                                      (d == 2 ? "triangle" : "tetrahedron"));
-        Cell cell{0, 0, 0, 0};
-        std::copy(m.cell(c), m.cell(c) + d + 1, cell.begin());
-        wk.add_cell(cell);
-      }
-      w.push_back(std::move(wk));
-      for (std::size_t k = 0; k < t.templated.templates[i].instance_count(); ++k) {
-        template_of.push_back(i);
-        local_of.push_back(k);
-      }
-    }
-  }
-  const mesh::Transformation& transformation(std::size_t instance) const {
-    const auto& mt = t.templated.templates[template_of[instance]];
-    return t.templated.transformations[std::size_t(mt.transformation_indices[local_of[instance]])];
-  }
-  void store() {
-    for (std::size_t i = 0; i < w.size(); ++i) {
-      auto& m = t.templated.templates[i].mesh;
-      const auto type = w[i].d == 2 ? mesh::ElementType::triangle : mesh::ElementType::tetrahedron;
-      m.vertex_coords = w[i].x;
-      m.cell_types.clear();
-      m.cell_vertex_indices.clear();
-      m.cell_vertex_index_offsets.assign(1, 0);
-      for (const auto& c : w[i].cells) m.add_cell(type, c.data());
-    }
-  }
-};
-
-struct TableIndex {
-  std::unordered_map<IndexType, IndexType> fwd, bwd;
-};
-
 std::vector<TableIndex> index_tables(const mesh::TemplatedMeshCompactSvb& t) {
   std::vector<TableIndex> out(t.tables.size());
   for (std::size_t k = 0; k < t.tables.size(); ++k)
@@ -276,11 +170,6 @@ void split_edge(Work& w, IndexType a, IndexType b, IndexType m) {
     w.add_cell(second);
   }
 }
-
-/// Vertices at the apex of an acute template corner, per template: Technique 5.8's protection
-/// balls (Section 5.2.5, Figure 5.17). Protection is a property of the point of AT, so it is
-/// closed under the identification tables (a corner of one template protects its copies).
-using Protected = std::vector<std::vector<char>>;
 
 /// A boundary vertex protected in a template whose cells meet at it with an angle sum below 90°.
 Protected acute_corners(const Session& s) {
@@ -334,8 +223,7 @@ void split_point(const Work& w, IndexType a, IndexType b, const std::vector<char
   for (int i = 0; i < w.d; ++i) q[i] = w.p(from)[i] + f * (w.p(to)[i] - w.p(from)[i]);
 }
 
-std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges,
-                   const Protected* protect = nullptr) {
+std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges, const Protected* protect) {
   const auto index = index_tables(s.t);
   std::set<TemplateEdge> closure;
   std::vector<TemplateEdge> queue;
@@ -437,9 +325,7 @@ void remove_cell(Work& w, IndexType ci) {
 /// 2-3 flip of the facet of cell ci opposite its vertex `skip`, shared with one more cell, when
 /// the new edge crosses the facet (the three new cells are then positive) and the smallest
 /// dihedral angle grows.
-using CellTest = std::function<bool(const Cell&)>;
-
-bool quality_flip_2_3(Work& w, IndexType ci, int skip, const CellTest* also = nullptr) {
+bool quality_flip_2_3(Work& w, IndexType ci, int skip, const CellTest* also) {
   const Cell c0 = w.cells[std::size_t(ci)];
   const IndexType d = c0[std::size_t(skip)];
   std::vector<IndexType> f;
@@ -475,7 +361,7 @@ bool quality_flip_2_3(Work& w, IndexType ci, int skip, const CellTest* also = nu
 /// 3-2 flip of edge {d, e} of cell ci when exactly three cells close around it (so it is no
 /// template boundary edge), the new facet does not exist yet, the edge crosses it, and the
 /// smallest dihedral angle grows.
-bool quality_flip_3_2(Work& w, IndexType ci, int p, int q, const CellTest* also = nullptr) {
+bool quality_flip_3_2(Work& w, IndexType ci, int p, int q, const CellTest* also) {
   const Cell c0 = w.cells[std::size_t(ci)];
   const IndexType d = c0[std::size_t(p)], e = c0[std::size_t(q)];
   const auto three = w.cells_with({d, e});
@@ -510,9 +396,6 @@ bool quality_flip_3_2(Work& w, IndexType ci, int p, int q, const CellTest* also 
   return true;
 }
 
-bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok, std::size_t largest_ring,
-                 bool improve);
-
 /// Section 5.2.6 in 3D: 2-3, 3-2 and 4-4 flips inside a tetrahedral template, each made only
 /// when it raises the smallest dihedral angle of the cells it replaces. Facets on the template
 /// boundary are never flipped (Section 5.2.3; a 4-4 flip needs a closed ring of four cells, so
@@ -540,11 +423,15 @@ std::size_t quality_flips_3d(Work& w) {
   return flips;
 }
 
-/// The vertex of a triangle other than a and b.
-IndexType apex(const Cell& c, IndexType a, IndexType b) {
-  for (int k = 0; k < 3; ++k)
-    if (c[std::size_t(k)] != a && c[std::size_t(k)] != b) return c[std::size_t(k)];
+/// The vertex of a cell (d + 1 vertices) that is not on its facet f (d vertices): the apex
+/// across f, in 2D (f an edge) and 3D (f a triangle) alike.
+IndexType apex(const Cell& c, std::initializer_list<IndexType> f) {
+  for (std::size_t k = 0; k <= f.size(); ++k)
+    if (std::find(f.begin(), f.end(), c[k]) == f.end()) return c[k];
   return -1;
+}
+IndexType apex(const Cell& c, const std::array<IndexType, 3>& f) {
+  return apex(c, {f[0], f[1], f[2]});
 }
 
 P2 image(const Session& s, std::size_t instance, IndexType v) {
@@ -561,8 +448,8 @@ bool encroached(const Session& s, std::size_t i, IndexType a, IndexType b, std::
   const auto& wj = s.w[s.template_of[j]];
   const auto ci = wi.cells_with({a, b}), cj = wj.cells_with({ja, jb});
   if (ci.size() != 1 || cj.size() != 1) return false;
-  const IndexType c = apex(wi.cells[std::size_t(ci[0])], a, b);
-  const IndexType cc = apex(wj.cells[std::size_t(cj[0])], ja, jb);
+  const IndexType c = apex(wi.cells[std::size_t(ci[0])], {a, b});
+  const IndexType cc = apex(wj.cells[std::size_t(cj[0])], {ja, jb});
   return CGAL::side_of_bounded_circle(image(s, i, a), image(s, i, b), image(s, i, c),
                                       image(s, j, cc)) == CGAL::ON_BOUNDED_SIDE;
 }
@@ -775,12 +662,14 @@ SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only) {
   return r;
 }
 
-double longest_edge(const Work& w, const Cell& c, IndexType& a, IndexType& b) {
+/// The longest edge {a, b} (a < b) among the n vertices c — a cell or a facet — and its length;
+/// ties go to the smaller vertex pair, for cells and facets alike.
+double longest_edge(const Work& w, const IndexType* c, int n, IndexType& a, IndexType& b) {
   double best = -1;
-  for (int i = 0; i < w.arity(); ++i)
-    for (int j = i + 1; j < w.arity(); ++j) {
-      const IndexType u = std::min(c[std::size_t(i)], c[std::size_t(j)]);
-      const IndexType v = std::max(c[std::size_t(i)], c[std::size_t(j)]);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const IndexType u = std::min(c[i], c[j]);
+      const IndexType v = std::max(c[i], c[j]);
       double l = 0;
       for (int k = 0; k < w.d; ++k) l += (w.p(u)[k] - w.p(v)[k]) * (w.p(u)[k] - w.p(v)[k]);
       if (l > best || (l == best && std::make_pair(u, v) < std::make_pair(a, b))) {
@@ -816,356 +705,6 @@ bool compare(double l, const std::string& op, double r) {
   if (op == ">=") return l >= r;
   if (op == "==") return l == r;
   return l != r;
-}
-/// The facets of a template with the cells on them (one: a template boundary facet; two: an
-/// interior facet), keyed by their sorted vertices.
-using FacetMap = std::map<std::array<IndexType, 3>, std::vector<IndexType>>;
-FacetMap facet_map_3d(const Work& w) {
-  FacetMap out;
-  for (IndexType ci = 0; ci < IndexType(w.cells.size()); ++ci)
-    for (const auto& f : facets_of(w, w.cells[std::size_t(ci)]))
-      out[{f[0], f[1], f[2]}].push_back(ci);
-  return out;
-}
-
-/// The vertex of cell c that is not on facet f.
-IndexType apex_3d(const Cell& c, const std::array<IndexType, 3>& f) {
-  for (IndexType v : c)
-    if (v != f[0] && v != f[1] && v != f[2]) return v;
-  return -1;
-}
-
-/// Template vertices bucketed in a uniform grid, to find the ones near a ball quickly; the
-/// decisions are the exact predicates on the candidates.
-struct PointGrid {
-  double h = 1;
-  std::unordered_map<std::uint64_t, std::vector<IndexType>> cells;
-  static std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k) {
-    const auto u = [](std::int64_t v) { return std::uint64_t(v + (1 << 20)) & 0x1fffff; };
-    return u(i) << 42 | u(j) << 21 | u(k);
-  }
-  explicit PointGrid(const Work& w) {
-    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    for (std::size_t v = 0; v < w.vertex_count(); ++v)
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = v == 0 ? w.p(IndexType(v))[i] : std::min(lo[i], w.p(IndexType(v))[i]);
-        hi[i] = v == 0 ? w.p(IndexType(v))[i] : std::max(hi[i], w.p(IndexType(v))[i]);
-      }
-    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
-    h = extent / std::max(1.0, std::cbrt(double(w.vertex_count())));
-    for (std::size_t v = 0; v < w.vertex_count(); ++v) {
-      const double* q = w.p(IndexType(v));
-      cells[key(std::int64_t(std::floor(q[0] / h)), std::int64_t(std::floor(q[1] / h)),
-                std::int64_t(std::floor(q[2] / h)))]
-          .push_back(IndexType(v));
-    }
-  }
-  /// The vertices in the grid cells a ball of radius r around c touches (a superset).
-  template <class F>
-  void near(const double* c, double r, F&& visit) const {
-    std::int64_t lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::int64_t(std::floor((c[i] - r) / h));
-      hi[i] = std::int64_t(std::floor((c[i] + r) / h));
-    }
-    for (auto i = lo[0]; i <= hi[0]; ++i)
-      for (auto j = lo[1]; j <= hi[1]; ++j)
-        for (auto k = lo[2]; k <= hi[2]; ++k) {
-          const auto it = cells.find(key(i, j, k));
-          if (it != cells.end())
-            for (IndexType v : it->second) visit(v);
-        }
-  }
-};
-
-/// x -> A^T (x - b): the inverse of a rigid transformation.
-void apply_inverse(const mesh::Transformation& t, const double* x, double* out) {
-  for (int i = 0; i < 3; ++i) {
-    out[i] = 0;
-    for (int j = 0; j < 3; ++j)
-      out[i] += t.matrix[std::size_t(j * 3 + i)] * (x[j] - t.translation[std::size_t(j)]);
-  }
-}
-
-P3 image3(const Session& s, std::size_t instance, IndexType v) {
-  double q[3];
-  s.transformation(instance).apply(s.w[s.template_of[instance]].p(v), q);
-  return P3(q[0], q[1], q[2]);
-}
-
-/// One round's view of the templates: facets, boundary triangles and point grids.
-struct Round3 {
-  std::vector<FacetMap> facets;
-  std::vector<PointGrid> grids;
-  explicit Round3(const Session& s) {
-    for (const auto& w : s.w) {
-      facets.push_back(facet_map_3d(w));
-      grids.emplace_back(w);
-      on_boundary.emplace_back(w.vertex_count(), 0);
-      for (const auto& [f, around] : facets.back())
-        if (around.size() == 1)
-          for (IndexType v : f) on_boundary.back()[std::size_t(v)] = 1;
-    }
-  }
-  std::vector<std::vector<char>> on_boundary;
-  bool is_interior_vertex(std::size_t t, IndexType v) const {
-    return !on_boundary[t][std::size_t(v)];
-  }
-  bool is_boundary(std::size_t t, std::array<IndexType, 3> f) const {
-    std::sort(f.begin(), f.end());
-    const auto it = facets[t].find(f);
-    return it != facets[t].end() && it->second.size() == 1;
-  }
-};
-
-/// The longest edge of triangle f of template t.
-TemplateEdge longest_edge_of(const Work& w, std::size_t t, const std::array<IndexType, 3>& f) {
-  TemplateEdge best{};
-  double len = -1;
-  for (int k = 0; k < 3; ++k) {
-    const IndexType a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
-    double l = 0;
-    for (int i = 0; i < 3; ++i) l += (w.p(a)[i] - w.p(b)[i]) * (w.p(a)[i] - w.p(b)[i]);
-    if (l > len) len = l, best = edge_of(t, a, b);
-  }
-  return best;
-}
-
-/// The interface triangles of instance pair (i, j) through a table map: triangle f of i's
-/// template whose vertices the map sends onto a boundary triangle of j's template.
-template <class F>
-void for_each_interface_triangle(const Session& s, const Round3& r, std::size_t i, std::size_t j,
-                                 const std::unordered_map<IndexType, IndexType>& map, F&& visit) {
-  const std::size_t ti = s.template_of[i], tj = s.template_of[j];
-  for (const auto& [f, around] : r.facets[ti]) {
-    if (around.size() != 1) continue;
-    std::array<IndexType, 3> g{};
-    bool all = true;
-    for (int k = 0; k < 3 && all; ++k) {
-      const auto it = map.find(f[std::size_t(k)]);
-      all = it != map.end();
-      if (all) g[std::size_t(k)] = it->second;
-    }
-    if (all && r.is_boundary(tj, g)) visit(f, around[0], g);
-  }
-}
-
-/// The edge of encroached boundary triangle f (corners `x`, in the coordinates of the encroaching
-/// point q) to bisect: an edge whose diametral ball holds q — the longest such — as Delaunay
-/// refinement splits an encroached segment before the facet around it, which keeps the
-/// refinement near a crease from shrinking both sides in turn; else f's longest edge.
-TemplateEdge edge_to_split(const Work& w, std::size_t t, const std::array<IndexType, 3>& f,
-                           const std::array<P3, 3>& x, const P3& q) {
-  std::optional<TemplateEdge> best;
-  double len = -1;
-  for (int k = 0; k < 3; ++k) {
-    const P3 &u = x[std::size_t(k)], &v = x[std::size_t((k + 1) % 3)];
-    if (CGAL::side_of_bounded_sphere(u, v, q) != CGAL::ON_BOUNDED_SIDE) continue;
-    const double l = CGAL::squared_distance(u, v);
-    if (l > len) len = l, best = edge_of(t, f[std::size_t(k)], f[std::size_t((k + 1) % 3)]);
-  }
-  return best ? *best : longest_edge_of(w, t, f);
-}
-
-/// Whether some sphere through triangle (a, b, c) — centre o + h n on the line through its
-/// circumcentre o along its unit normal n, |h| <= 2 rho (rho its circumradius) — holds none of
-/// the points strictly inside: then the triangle is a face of their Delaunay tetrahedralization.
-/// Point q is inside that sphere iff |q - o|^2 - rho^2 < 2 h (q - o).n, one bound on h per point,
-/// so this is a one-dimensional feasibility question. The diametral ball (h = 0) alone is
-/// stricter: next to a crease at an acute angle it holds the points of the other facet, and
-/// refining for it there does not end. Beyond 4.5 rho from o no such sphere reaches. Decided in
-/// floating point: the tetrahedralization built on it is checked exactly afterwards.
-/// `worst` is set to a point that rules the sphere out.
-bool delaunay_face(const P3& a, const P3& b, const P3& c, const std::vector<P3>& points,
-                   std::optional<P3>& worst) {
-  const P3 o = CGAL::circumcenter(a, b, c);
-  const double rho2 = CGAL::squared_distance(o, a), rho = std::sqrt(rho2);
-  auto nv = CGAL::cross_product(b - a, c - a);
-  const double nn = std::sqrt(nv.squared_length());
-  if (!(nn > 0)) return false;
-  nv = nv / nn;
-  double lo = -2 * rho, hi = 2 * rho;
-  for (const auto& q : points) {
-    const auto d = q - o;
-    const double power = d.squared_length() - rho2, height = d * nv;
-    // inside for h with power < 2 h height: keep h where power >= 2 h height.
-    if (height > 0)
-      hi = std::min(hi, power / (2 * height));
-    else if (height < 0)
-      lo = std::max(lo, power / (2 * height));
-    else if (power < 0)
-      lo = hi + 1;
-    if (!(lo <= hi)) {
-      worst = q;
-      return false;
-    }
-  }
-  return true;
-}
-
-/// Technique 5.8, step "boundary facets Delaunay": the edges to bisect of the template boundary
-/// triangles that are no Delaunay face (delaunay_face) of the vertices near them — of their own
-/// template, and, for an interface triangle, of the instance across it too (AT's coordinates).
-/// With every boundary triangle a Delaunay face, the constrained Delaunay tetrahedralization of
-/// a template is Delaunay.
-std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
-                                              const std::vector<TableIndex>& index) {
-  std::set<TemplateEdge> bad;
-  std::vector<P3> near;
-  for (std::size_t t = 0; t < s.w.size(); ++t) {
-    const auto& w = s.w[t];
-    for (const auto& entry : r.facets[t]) {
-      if (entry.second.size() != 1) continue;
-      const auto& f = entry.first;
-      const P3 a = p3(w.p(f[0])), b = p3(w.p(f[1])), c = p3(w.p(f[2]));
-      const P3 o = CGAL::circumcenter(a, b, c);
-      const double reach = 4.5 * std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
-      const double oc[3] = {o.x(), o.y(), o.z()};
-      near.clear();
-      r.grids[t].near(oc, reach, [&](IndexType q) {
-        if (q != f[0] && q != f[1] && q != f[2]) near.push_back(p3(w.p(q)));
-      });
-      std::optional<P3> by;
-      if (!delaunay_face(a, b, c, near, by)) bad.insert(edge_to_split(w, t, f, {a, b, c}, *by));
-    }
-  }
-  for (const auto& id : s.t.identifications)
-    for (bool forward : {true, false}) {
-      const auto i = std::size_t(forward ? id.from_instance : id.to_instance);
-      const auto j = std::size_t(forward ? id.to_instance : id.from_instance);
-      const auto& map =
-          forward ? index[std::size_t(id.table)].fwd : index[std::size_t(id.table)].bwd;
-      const auto ti = s.template_of[i], tj = s.template_of[j];
-      for_each_interface_triangle(s, r, i, j, map, [&](const auto& f, IndexType, const auto& g) {
-        const P3 a = image3(s, i, f[0]), b = image3(s, i, f[1]), c = image3(s, i, f[2]);
-        const P3 o = CGAL::circumcenter(a, b, c);
-        const double reach = 4.5 * std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
-        const double oc[3] = {o.x(), o.y(), o.z()};
-        near.clear();
-        // Both sides: the sphere must be empty of the two instances' vertices at once.
-        double local[3];
-        apply_inverse(s.transformation(i), oc, local);
-        r.grids[ti].near(local, reach, [&](IndexType q) {
-          if (q != f[0] && q != f[1] && q != f[2]) near.push_back(image3(s, i, q));
-        });
-        apply_inverse(s.transformation(j), oc, local);
-        r.grids[tj].near(local, reach, [&](IndexType q) {
-          if (q != g[0] && q != g[1] && q != g[2]) near.push_back(image3(s, j, q));
-        });
-        std::optional<P3> by;
-        if (!delaunay_face(a, b, c, near, by))
-          bad.insert(edge_to_split(s.w[ti], ti, f, {a, b, c}, *by));
-      });
-    }
-  return {bad.begin(), bad.end()};
-}
-
-/// Replaces the cells of template `w` by TetGen's constrained Delaunay tetrahedralization of its
-/// vertices and the given boundary triangles.
-void retetrahedralize_template(Work& w, const std::vector<std::array<IndexType, 3>>& surface) {
-  gen::SurfaceInput in;
-  for (std::size_t v = 0; v < w.vertex_count(); ++v)
-    in.points.push_back({w.p(IndexType(v))[0], w.p(IndexType(v))[1], w.p(IndexType(v))[2]});
-  for (const auto& f : surface)
-    in.triangles.push_back({std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])});
-  const auto out = gen::constrained_delaunay_tetrahedralization(in);
-  Work fresh;
-  fresh.d = 3;
-  for (const auto& q : out.points) fresh.add_vertex(q.data());
-  for (const auto& c : out.tetrahedra)
-    fresh.add_cell({IndexType(c[0]), IndexType(c[1]), IndexType(c[2]), IndexType(c[3])});
-  w = std::move(fresh);
-}
-
-/// Replaces every template's cells by TetGen's constrained Delaunay tetrahedralization of its
-/// vertices and its boundary triangles (kept as they are; TetGen's Steiner points, if any, are
-/// template-interior and come last).
-void retetrahedralize(Session& s, const Round3& r) {
-  for (std::size_t t = 0; t < s.w.size(); ++t) {
-    std::vector<std::array<IndexType, 3>> surface;
-    for (const auto& [f, around] : r.facets[t])
-      if (around.size() == 1) surface.push_back(f);
-    retetrahedralize_template(s.w[t], surface);
-  }
-}
-
-/// |D| / L^5 for apex e and cell c: D the in-sphere determinant det[q_i - e, |q_i - e|^2], L the
-/// largest distance among the five points. A perturbation of the coordinates by this fraction of
-/// L can change the in-sphere sign, so an apex inside by no more than ~1e-9 is a tie decided by
-/// rounding — the sliver of four cocircular points has no stable circumsphere, while D scales
-/// with its volume (tests/cli/delaunay_check.py measures the same).
-double insphere_measure(const Work& w, const Cell& c, IndexType e) {
-  double m[4][4];
-  double span = 0;
-  for (int i = 0; i < 4; ++i) {
-    double sq = 0;
-    for (int k = 0; k < 3; ++k) {
-      m[i][k] = w.p(c[std::size_t(i)])[k] - w.p(e)[k];
-      sq += m[i][k] * m[i][k];
-    }
-    m[i][3] = sq;
-    span = std::max(span, std::sqrt(sq));
-    for (int j = 0; j < 4; ++j) {
-      double dd = 0;
-      for (int k = 0; k < 3; ++k) {
-        const double x = w.p(c[std::size_t(i)])[k] - w.p(c[std::size_t(j)])[k];
-        dd += x * x;
-      }
-      span = std::max(span, std::sqrt(dd));
-    }
-  }
-  const auto det3 = [](double a[3][3]) {
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-  };
-  double det = 0;
-  for (int j = 0; j < 4; ++j) {
-    double minor[3][3];
-    for (int i = 1; i < 4; ++i)
-      for (int k = 0, kk = 0; k < 4; ++k)
-        if (k != j) minor[i - 1][kk++] = m[i][k];
-    det += (j % 2 ? -1 : 1) * m[0][j] * det3(minor);
-  }
-  return span > 0 ? std::abs(det) / std::pow(span, 5) : 0;
-}
-
-/// The interior facets of the templates that are not locally Delaunay (the apex across strictly
-/// inside the circumsphere of a cell), as (template, facet).
-std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> non_ld_facets(const Session& s,
-                                                                            const Round3& r) {
-  std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> out;
-  for (std::size_t t = 0; t < s.w.size(); ++t) {
-    const auto& w = s.w[t];
-    for (const auto& [f, around] : r.facets[t]) {
-      if (around.size() != 2) continue;
-      const Cell& c = w.cells[std::size_t(around[0])];
-      const IndexType e = apex_3d(w.cells[std::size_t(around[1])], f);
-      if (CGAL::side_of_bounded_sphere(p3(w.p(c[0])), p3(w.p(c[1])), p3(w.p(c[2])), p3(w.p(c[3])),
-                                       p3(w.p(e))) == CGAL::ON_BOUNDED_SIDE &&
-          insphere_measure(w, c, e) > 1e-9)
-        out.emplace_back(t, f);
-    }
-  }
-  return out;
-}
-
-/// Whether a cell is positive and not flat to rounding: 6 V / L^3 > 1e-9 (V its volume, L its
-/// longest edge). AT's writers use one coordinate per shared vertex, taken from one of its
-/// instances, so a cell of a rotated instance is written with coordinates that differ from its
-/// own image by rounding; only a cell this far from flat is positive in every written copy.
-bool robustly_positive(const Work& w, const Cell& c) {
-  if (orientation(w, c) <= 0) return false;
-  const auto u = sub3(w.p(c[1]), w.p(c[0])), v = sub3(w.p(c[2]), w.p(c[0])),
-             x = sub3(w.p(c[3]), w.p(c[0]));
-  double longest = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      const auto e = sub3(w.p(c[std::size_t(i)]), w.p(c[std::size_t(j)]));
-      longest = std::max(longest, dot3(e, e));
-    }
-  longest = std::sqrt(longest);
-  return dot3(cross3(u, v), x) > 1e-9 * longest * longest * longest;
 }
 
 /// Edge removal (generalising the 3-2 flip; k = 4 is the 4-4 flip): the k cells around edge
@@ -1245,355 +784,11 @@ bool remove_edge(Work& w, IndexType ci, int p, int q, const CellTest& ok, std::s
 /// removed by the 2-3 or 3-2 flip (inside the template; boundary facets are never flipped) that
 /// raises the smallest dihedral angle and leaves cells positive in every instance; the points
 /// of such a flip are cospherical up to rounding, so the cells stay Delaunay. Returns the flips.
-std::size_t remove_slivers(Session& s) {
-  std::size_t flips = 0;
-  for (std::size_t t = 0; t < s.w.size(); ++t) {
-    auto& w = s.w[t];
-    const CellTest ok = [&](const Cell& c) { return robustly_positive(w, c); };
-    for (bool again = true; again;) {
-      again = false;
-      for (IndexType ci = 0; ci < IndexType(w.cells.size()); ++ci) {
-        if (ok(w.cells[std::size_t(ci)])) continue;
-        bool flipped = false;
-        for (int p = 0; p < 4 && !flipped; ++p)
-          for (int q = p + 1; q < 4 && !flipped; ++q)
-            flipped = remove_edge(w, ci, p, q, ok, 6, false);
-        for (int skip = 0; skip < 4 && !flipped; ++skip)
-          flipped = quality_flip_2_3(w, ci, skip, &ok);
-        if (!flipped) continue;
-        ++flips;
-        again = true;
-      }
-    }
-  }
-  return flips;
-}
 
-/// The cells of the templates that are flat to rounding, as (template, cell).
-std::vector<std::pair<std::size_t, IndexType>> not_positive_everywhere(const Session& s) {
-  std::vector<std::pair<std::size_t, IndexType>> out;
-  for (std::size_t t = 0; t < s.w.size(); ++t)
-    for (IndexType ci = 0; ci < IndexType(s.w[t].cells.size()); ++ci)
-      if (!robustly_positive(s.w[t], s.w[t].cells[std::size_t(ci)])) out.emplace_back(t, ci);
-  return out;
-}
+} // namespace symmesh::adapt::work
 
-/// Definition 4.10 in 3D: the longest edges of the interface triangles whose cell on one side
-/// has the apex across the interface strictly inside its circumsphere (AT's coordinates).
-std::vector<TemplateEdge> non_tald_3d(const Session& s, const Round3& r,
-                                      const std::vector<TableIndex>& index) {
-  std::set<TemplateEdge> bad;
-  for (const auto& id : s.t.identifications) {
-    const auto i = std::size_t(id.from_instance), j = std::size_t(id.to_instance);
-    const auto ti = s.template_of[i], tj = s.template_of[j];
-    for_each_interface_triangle(
-        s, r, i, j, index[std::size_t(id.table)].fwd, [&](const auto& f, IndexType ci, auto g) {
-          std::sort(g.begin(), g.end());
-          const IndexType cj = r.facets[tj].at(g)[0];
-          const Cell& a = s.w[ti].cells[std::size_t(ci)];
-          const Cell& b = s.w[tj].cells[std::size_t(cj)];
-          const P3 qa = image3(s, i, apex_3d(a, f)), qb = image3(s, j, apex_3d(b, g));
-          const bool inside_a = CGAL::side_of_bounded_sphere(image3(s, i, a[0]), image3(s, i, a[1]),
-                                                             image3(s, i, a[2]), image3(s, i, a[3]),
-                                                             qb) == CGAL::ON_BOUNDED_SIDE;
-          const bool inside_b = CGAL::side_of_bounded_sphere(image3(s, j, b[0]), image3(s, j, b[1]),
-                                                             image3(s, j, b[2]), image3(s, j, b[3]),
-                                                             qa) == CGAL::ON_BOUNDED_SIDE;
-          if (inside_a || inside_b) bad.insert(longest_edge_of(s.w[ti], ti, f));
-        });
-  }
-  return {bad.begin(), bad.end()};
-}
-
-/// The template boundary triangles (sorted vertices).
-std::vector<std::array<IndexType, 3>> surface_of(const Work& w) {
-  std::vector<std::array<IndexType, 3>> out;
-  for (const auto& [f, around] : facet_map_3d(w))
-    if (around.size() == 1) out.push_back(f);
-  return out;
-}
-
-/// Whether boundary edge {a, b} between boundary triangles (a, b, c) and (a, b, d) of w should be
-/// flipped to {c, d} (Lawson, in the plane of a flat boundary patch): the two triangles lie in one
-/// plane up to the rounding of the coordinates (d within 1e-9 of the longest edge of it — the
-/// written coordinates of a slanted plane are not exactly coplanar), the quadrilateral is
-/// strictly convex, and d lies strictly inside the circle through a, b, c (exact).
-bool boundary_flip_wanted(const Work& w, IndexType a, IndexType b, IndexType c, IndexType d) {
-  const auto n = cross3(sub3(w.p(b), w.p(a)), sub3(w.p(c), w.p(a)));
-  const double nn = std::sqrt(dot3(n, n));
-  double longest = 0;
-  for (IndexType u : {a, b, c, d})
-    for (IndexType v : {a, b, c, d}) {
-      const auto e = sub3(w.p(u), w.p(v));
-      longest = std::max(longest, std::sqrt(dot3(e, e)));
-    }
-  if (!(nn > 0) || std::abs(dot3(n, sub3(w.p(d), w.p(a)))) / nn > 1e-9 * longest) return false;
-  // In-plane orientation of (p, q, r) along n, relative to its scale.
-  const auto side = [&](IndexType p, IndexType q, IndexType r) {
-    return dot3(cross3(sub3(w.p(q), w.p(p)), sub3(w.p(r), w.p(p))), n) / (nn * longest * longest);
-  };
-  const double eps = 1e-12; // a strictly convex quadrilateral, not one flat to rounding
-  if (!(side(a, b, c) * side(a, b, d) < -eps * eps && side(c, d, a) * side(c, d, b) < -eps * eps))
-    return false;
-  return CGAL::side_of_bounded_sphere(p3(w.p(a)), p3(w.p(b)), p3(w.p(c)), p3(w.p(d))) ==
-         CGAL::ON_BOUNDED_SIDE;
-}
-
-/// One flip of the boundary triangulation: template t, edge {a, b} -> {c, d}.
-struct SurfaceFlip {
-  std::size_t t = 0;
-  IndexType a = 0, b = 0, c = 0, d = 0;
-};
-
-/// Lawson flips of the template boundary triangulations inside flat patches, each made at every
-/// related edge at once (closed under the identification tables) and only when it is wanted in
-/// every template it touches, so interfaces stay conforming and a tie decided differently by the
-/// rounding of two copies is left alone. The templates whose boundary changed are
-/// re-tetrahedralized. Returns the flips (related copies counted).
-std::size_t surface_lawson(Session& s, std::size_t max_sweeps) {
-  std::size_t flips = 0;
-  for (std::size_t sweep = 0; sweep < max_sweeps; ++sweep) {
-    const auto index = index_tables(s.t);
-    std::vector<std::set<std::array<IndexType, 3>>> surf(s.w.size());
-    std::vector<std::map<std::pair<IndexType, IndexType>, std::vector<IndexType>>> wings(
-        s.w.size());
-    for (std::size_t t = 0; t < s.w.size(); ++t)
-      for (const auto& f : surface_of(s.w[t])) {
-        surf[t].insert(f);
-        for (int k = 0; k < 3; ++k) {
-          const IndexType u = f[std::size_t(k)], v = f[std::size_t((k + 1) % 3)],
-                          x = f[std::size_t((k + 2) % 3)];
-          wings[t][std::minmax(u, v)].push_back(x);
-        }
-      }
-    const auto tri = [](IndexType u, IndexType v, IndexType x) {
-      std::array<IndexType, 3> f{u, v, x};
-      std::sort(f.begin(), f.end());
-      return f;
-    };
-    std::vector<std::set<std::array<IndexType, 3>>> touched(s.w.size());
-    std::vector<char> changed(s.w.size(), 0);
-    std::size_t made = 0;
-    for (std::size_t t = 0; t < s.w.size(); ++t)
-      for (const auto& [edge, apexes] : wings[t]) {
-        if (apexes.size() != 2) continue;
-        const auto [a, b] = edge;
-        if (!boundary_flip_wanted(s.w[t], a, b, apexes[0], apexes[1])) continue;
-        std::vector<SurfaceFlip> closure{{t, a, b, apexes[0], apexes[1]}};
-        std::set<std::tuple<std::size_t, IndexType, IndexType>> seen{{t, a, b}};
-        bool ok = true;
-        for (std::size_t next = 0; next < closure.size() && ok; ++next)
-          for (std::size_t k = 0; k < s.t.tables.size() && ok; ++k)
-            for (bool forward : {true, false}) {
-              const SurfaceFlip m = closure[next];
-              const auto& table = s.t.tables[k];
-              if (std::size_t(forward ? table.from_template : table.to_template) != m.t) continue;
-              const auto& map = forward ? index[k].fwd : index[k].bwd;
-              const auto ia = map.find(m.a), ib = map.find(m.b);
-              if (ia == map.end() || ib == map.end()) continue;
-              const auto ic = map.find(m.c), id = map.find(m.d);
-              const auto other = std::size_t(forward ? table.to_template : table.from_template);
-              const auto [ra, rb] = std::minmax(ia->second, ib->second);
-              if (!seen.insert({other, ra, rb}).second) continue;
-              // The related edge must be a flat boundary edge with the related wings.
-              if (ic == map.end() || id == map.end() ||
-                  !surf[other].count(tri(ra, rb, ic->second)) ||
-                  !surf[other].count(tri(ra, rb, id->second))) {
-                // An edge of the interface's rim: the wing across it lies elsewhere.
-                ok = false;
-                break;
-              }
-              if (!boundary_flip_wanted(s.w[other], ra, rb, ic->second, id->second)) {
-                ok = false;
-                break;
-              }
-              closure.push_back({other, ra, rb, ic->second, id->second});
-            }
-        if (!ok) continue;
-        // Each triangle flips at most once a sweep, and the new edge must be new.
-        for (const auto& m : closure)
-          if (touched[m.t].count(tri(m.a, m.b, m.c)) || touched[m.t].count(tri(m.a, m.b, m.d)) ||
-              !surf[m.t].count(tri(m.a, m.b, m.c)) || !surf[m.t].count(tri(m.a, m.b, m.d)) ||
-              wings[m.t].count(std::minmax(m.c, m.d)))
-            ok = false;
-        if (!ok) continue;
-        for (const auto& m : closure) {
-          for (const auto& f : {tri(m.a, m.b, m.c), tri(m.a, m.b, m.d)}) {
-            surf[m.t].erase(f);
-            touched[m.t].insert(f);
-          }
-          for (const auto& f : {tri(m.c, m.d, m.a), tri(m.c, m.d, m.b)}) {
-            surf[m.t].insert(f);
-            touched[m.t].insert(f);
-          }
-          changed[m.t] = 1;
-          ++made;
-        }
-      }
-    if (made == 0) break;
-    flips += made;
-    for (std::size_t t = 0; t < s.w.size(); ++t)
-      if (changed[t]) retetrahedralize_template(s.w[t], {surf[t].begin(), surf[t].end()});
-  }
-  return flips;
-}
-
-/// Deletes template-interior vertices of template t (on no boundary facet, so in no
-/// identification table) and re-tetrahedralizes it: the vertices after each deleted one move
-/// down, and the tables follow. Fewer points never encroach a boundary triangle.
-void delete_interior_vertices(Session& s, std::size_t t, const std::set<IndexType>& gone) {
-  auto& w = s.w[t];
-  auto surface = surface_of(w);
-  std::vector<IndexType> to(w.vertex_count(), -1);
-  Work kept;
-  kept.d = 3;
-  for (IndexType v = 0; v < IndexType(w.vertex_count()); ++v)
-    if (!gone.count(v)) to[std::size_t(v)] = kept.add_vertex(w.p(v));
-  for (auto& f : surface)
-    for (auto& v : f) v = to[std::size_t(v)];
-  for (auto& table : s.t.tables)
-    for (auto& [a, b] : table.pairs) {
-      if (std::size_t(table.from_template) == t) a = to[std::size_t(a)];
-      if (std::size_t(table.to_template) == t) b = to[std::size_t(b)];
-    }
-  w = std::move(kept);
-  retetrahedralize_template(w, surface);
-}
-
-/// Slivers flat to rounding that no flip removed: four points of a symmetric object that lie on
-/// one circle (a point and its rotated copy on each interface of a slice, at two heights, span
-/// an isosceles trapezoid), so the Delaunay tetrahedralization may contain the flat cell on them.
-/// Such a sliver's template-interior vertices are deleted, or, when all four are boundary
-/// vertices, its centroid is inserted as a template-interior vertex (it lies strictly inside
-/// their circle and breaks the tie); then the template is re-tetrahedralized, a few times.
-/// Returns the vertices deleted and inserted.
-std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& rep) {
-  std::size_t deleted = 0, inserted = 0;
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    const auto flat = not_positive_everywhere(s);
-    if (flat.empty()) break;
-    std::map<std::size_t, std::set<IndexType>> gone;
-    std::map<std::size_t, std::vector<std::array<double, 3>>> added;
-    std::map<std::size_t, std::set<IndexType>> boundary; // per template, its boundary vertices
-    for (const auto& [t, ci] : flat) {
-      if (!boundary.count(t))
-        for (const auto& f : surface_of(s.w[t])) boundary[t].insert(f.begin(), f.end());
-      const auto& on = boundary[t];
-      const Cell& c = s.w[t].cells[std::size_t(ci)];
-      bool interior = false;
-      for (IndexType v : c)
-        if (!on.count(v)) gone[t].insert(v), interior = true;
-      if (interior) continue;
-      std::array<double, 3> m{0, 0, 0};
-      for (IndexType v : c)
-        for (int k = 0; k < 3; ++k) m[std::size_t(k)] += s.w[t].p(v)[k] / 4;
-      added[t].push_back(m);
-    }
-    for (const auto& [t, vs] : gone) {
-      delete_interior_vertices(s, t, vs);
-      deleted += vs.size();
-    }
-    for (auto& [t, points] : added) {
-      if (gone.count(t)) continue; // indices changed; the next attempt sees the sliver again
-      const auto surface = surface_of(s.w[t]);
-      for (const auto& q : points) s.w[t].add_vertex(q.data());
-      retetrahedralize_template(s.w[t], surface);
-      inserted += points.size();
-    }
-    rep.flips += remove_slivers(s);
-  }
-  return {deleted, inserted};
-}
-
-/// Technique 5.8 in 3D: rounds of (1) bisecting the longest edge of every encroached template
-/// boundary triangle at every related edge, until none is encroached; (2) the constrained
-/// Delaunay tetrahedralization of every template; (3) bisecting the interface triangles that are
-/// not template-aware locally Delaunay. Ends when (3) finds none.
-DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progress* progress) {
-  DelaunayReport rep;
-  const auto limit = [&](const std::string& what) {
-    s.store();
-    throw AdaptationLimit("Technique 5.8 in 3D: " + what +
-                          " (ping-pong encroachment, Figure 5.17; protection balls are not "
-                          "implemented)");
-  };
-  const auto cell_count = [&] {
-    std::size_t n = 0;
-    for (const auto& w : s.w) n += w.cells.size();
-    return n;
-  };
-  // Refinement that keeps encroaching (acute boundary angles, Figure 5.17) is stopped by this
-  // cap long before the round cap: 16 times the input's template cells.
-  const std::size_t max_cells = 16 * cell_count() + 4096;
-  for (;;) {
-    if (cell_count() > max_cells)
-      limit("the template boundaries were refined to " + std::to_string(cell_count()) +
-            " template cells, over 16 times the input's, and boundary triangles are still "
-            "encroached");
-    rep.flips += surface_lawson(s, 64);
-    auto index = index_tables(s.t);
-    std::vector<TemplateEdge> bad;
-    {
-      const Round3 r(s);
-      bad = encroached_boundary(s, r, index);
-    }
-    bool phase_tald = false;
-    if (bad.empty()) {
-      phase_tald = true;
-      {
-        const Round3 r(s);
-        retetrahedralize(s, r);
-      }
-      rep.flips += remove_slivers(s);
-      const auto [deleted, inserted] = resolve_slivers(s, rep);
-      rep.vertices_deleted += deleted;
-      rep.vertices_inserted += inserted;
-      if (const auto flat = not_positive_everywhere(s); !flat.empty()) {
-        const Cell& c = s.w[flat.front().first].cells[std::size_t(flat.front().second)];
-        throw AdaptationLimit(
-            "Technique 5.8 in 3D: template " + std::to_string(flat.front().first) + " cell {" +
-            std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
-            ", " + std::to_string(c[3]) + "} (and " + std::to_string(flat.size() - 1) +
-            " more) is a sliver, flat to rounding, that neither flips nor "
-            "vertex deletion or insertion removed");
-      }
-      const Round3 r(s);
-      const auto not_ld = non_ld_facets(s, r);
-      if (!not_ld.empty()) {
-        const auto& [t, f] = not_ld.front();
-        throw std::logic_error("Technique 5.8: template " + std::to_string(t) + " facet {" +
-                               std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " +
-                               std::to_string(f[2]) + "} (and " +
-                               std::to_string(not_ld.size() - 1) +
-                               " more) is not locally Delaunay after the constrained Delaunay "
-                               "tetrahedralization");
-      }
-      bad = non_tald_3d(s, r, index);
-      if (bad.empty()) break;
-    }
-    if (rep.rounds == max_rounds) {
-      const auto& e = bad.front();
-      limit("after " + std::to_string(max_rounds) + " rounds (--max-rounds), template " +
-            std::to_string(e.t) + " boundary edge {" + std::to_string(e.a) + ", " +
-            std::to_string(e.b) + "} (and " + std::to_string(bad.size() - 1) +
-            " more) still belongs to an encroached or not template-aware locally Delaunay "
-            "triangle");
-    }
-    rep.bisections += bisect(s, bad);
-    ++rep.rounds;
-    if (progress) {
-      std::size_t cells = 0;
-      for (const auto& w : s.w) cells += w.cells.size();
-      progress->message("Technique 5.8 round " + std::to_string(rep.rounds) + ": " +
-                        std::to_string(bad.size()) + " boundary edges bisected (" +
-                        (phase_tald ? "not template-aware locally Delaunay" : "encroached") +
-                        "), " + std::to_string(cells) + " template cells");
-    }
-  }
-  return rep;
-}
-
-} // namespace
+namespace symmesh::adapt {
+using namespace work;
 
 std::size_t expand_identifications(mesh::TemplatedMeshCompactSvb& t) {
   Session s(t);
@@ -1782,7 +977,7 @@ std::size_t refine_where(mesh::TemplatedMeshCompactSvb& t, const CellPredicate& 
     for (const auto& c : w.cells) {
       CellView view;
       IndexType a = -1, b = -1;
-      view.size = longest_edge(w, c, a, b);
+      view.size = longest_edge(w, c.data(), w.arity(), a, b);
       view.quality = cell_quality(w, c);
       view.template_index = ti;
       double centroid[3] = {0, 0, 0};
