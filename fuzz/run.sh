@@ -21,29 +21,6 @@ targets=()
 for h in "${harnesses[@]}"; do targets+=("fuzz_$h"); done
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
 report=docs/fuzzing.md
-# Rows of harnesses not run this time are kept from the last report.
-kept=$(mktemp)
-if [ -f "$report" ]; then
-  grep -E '^\| [a-z_]+ \| [0-9]' "$report" | while read -r row; do
-    name=$(echo "$row" | awk -F'|' '{gsub(/ /, "", $2); print $2}')
-    case " ${harnesses[*]} " in *" $name "*) ;; *) echo "$row" ;; esac
-  done > "$kept"
-fi
-{
-  echo "# Fuzzing campaigns"
-  echo
-  echo "Written by \`bash fuzz/run.sh SECONDS [HARNESS...]\` (clang-14, libFuzzer, ASan + UBSan, the library"
-  echo "instrumented; $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')). A row is the"
-  echo "latest campaign of its harness, started from its saved inputs. Harnesses: fuzz/*.cpp; saved"
-  echo "inputs: fuzz/corpus/<harness>/, replayed by \`make test\` (ctest fuzz.replay_*). A finding is"
-  echo "fixed and then saved in the corpus, so that it stays a regression test. The campaigns of the last"
-  echo "run ($(date -u +%Y-%m-%d), ${harnesses[*]}) ran $([ "${FUZZ_PARALLEL:-0}" = 1 ] && echo "side by side, one core each" || echo "one after another")."
-  echo
-  echo "| harness | date | seconds | executions | coverage (edges) | corpus | findings |"
-  echo "|---|---|---|---|---|---|---|"
-  cat "$kept"
-} > "$report.part"
-rm -f "$kept"
 # One campaign; its row goes to build-fuzz/<harness>/row, collected below in the given order.
 campaign() {
   local h=$1 work=build-fuzz/$1
@@ -80,8 +57,32 @@ if [ "${FUZZ_PARALLEL:-0}" = 1 ]; then
 else
   for h in "${harnesses[@]}"; do campaign "$h"; done
 fi
-for h in "${harnesses[@]}"; do cat "build-fuzz/$h/row" >> "$report.part"; done
+# The report is composed when the campaigns end, under a lock, from the report as it is then:
+# rows of harnesses not run this time are kept, so that two runs may overlap (each its own
+# harnesses) without losing the other's rows.
+exec 9> build-fuzz/report.lock
+flock 9
+part=$(mktemp "$report.XXXXXX")
 {
+  echo "# Fuzzing campaigns"
+  echo
+  echo "Written by \`bash fuzz/run.sh SECONDS [HARNESS...]\` (clang-14, libFuzzer, ASan + UBSan, the library"
+  echo "instrumented; $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')). A row is the"
+  echo "latest campaign of its harness, started from its saved inputs. Harnesses: fuzz/*.cpp; saved"
+  echo "inputs: fuzz/corpus/<harness>/, replayed by \`make test\` (ctest fuzz.replay_*). A finding is"
+  echo "fixed and then saved in the corpus, so that it stays a regression test. A row's campaign ran"
+  echo "alone on its core or beside others (FUZZ_PARALLEL=1, or overlapping runs); the machine's other"
+  echo "core was not kept idle, so executions per second are lower bounds."
+  echo
+  echo "| harness | date | seconds | executions | coverage (edges) | corpus | findings |"
+  echo "|---|---|---|---|---|---|---|"
+  if [ -f "$report" ]; then
+    grep -E '^\| [a-z_]+ \| [0-9]' "$report" | while read -r row; do
+      name=$(echo "$row" | awk -F'|' '{gsub(/ /, "", $2); print $2}')
+      case " ${harnesses[*]} " in *" $name "*) ;; *) echo "$row" ;; esac
+    done
+  fi
+  for h in "${harnesses[@]}"; do cat "build-fuzz/$h/row"; done
   echo
   echo "## Findings saved as regression inputs"
   echo
@@ -92,5 +93,6 @@ for h in "${harnesses[@]}"; do cat "build-fuzz/$h/row" >> "$report.part"; done
     echo "- \`$f\`"
   done
   [ "$found" = 1 ] || echo "none"
-} >> "$report.part"
-mv "$report.part" "$report"
+} > "$part"
+chmod 644 "$part"
+mv "$part" "$report"
