@@ -476,6 +476,29 @@ rc::Gen<GeneratedStructure<3>> four_tetrahedra_around_an_axis(bool reflex) {
   });
 }
 
+rc::Gen<GeneratedStructure<2>> acute_wedge() {
+  return rc::gen::exec([] {
+    const Exact p = rational(pick(5, 10), 10), q = p * rational(pick(1, 9), 10);
+    const std::vector<Point<2>> pts{make_point<2>({Exact(0), Exact(0)}),
+                                    make_point<2>({Exact(1), Exact(0)}), make_point<2>({p, q})};
+    const auto mesh = complex_from_cells<2>(pts, {{0, 1, 2}}, false);
+    Point<2> along_x = core::zero_point<Exact, 2>(), along_w = core::zero_point<Exact, 2>();
+    along_x[1] = 1;
+    along_w[0] = -q;
+    along_w[1] = p;
+    GeneratedStructure<2> g;
+    g.x = single_template<2>(mesh,
+                             {Motion<2>(), Motion<2>::reflection(along_x, Exact(0)),
+                              Motion<2>::reflection(along_w, Exact(0))},
+                             {1, 1, 1});
+    g.tier = Tier::valid_templated_mesh;
+    g.convex = false;
+    g.recipe =
+        "triangle (0,0) (1,0) " + text<2>(pts[2]) + " reflected across both legs at the origin";
+    return g;
+  });
+}
+
 // ----- failure records ---------------------------------------------------------------------------
 
 namespace {

@@ -207,6 +207,11 @@ rc::Gen<GeneratedStructure<D>> encroached_reflection();
 /// convex, a vertex when it is reflex). A reflex ring keeps only the diagonal 2-4 inside.
 rc::Gen<GeneratedStructure<3>> four_tetrahedra_around_an_axis(bool reflex);
 
+/// Technique 5.8's protection balls (Figure 5.17): one triangle template (0,0), (1,0), (p, q)
+/// with a corner of 5.7°–42° at the origin (0 < q < p, legs of different lengths), reflected
+/// across both legs (three instances around the corner).
+rc::Gen<GeneratedStructure<2>> acute_wedge();
+
 /// Tiers. valid: reflective, orthogonal reflections, translation grids, each possibly split into
 /// 2-3 templates by cell centroid and moved by one global rigid motion. structure: valid plus
 /// Figure 4.4 families. any: structure plus overlapping instances (Eq. 4.2 violated).

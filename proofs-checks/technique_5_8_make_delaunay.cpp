@@ -8,6 +8,11 @@
 // of AT's cells, exactly (core::is_delaunay_mesh) — and covers the same area.
 // Dropped hypothesis (Lines 6-18, the boundary insertions): making only the templates Delaunay
 // leaves the mirrored flat triangles' interface facet encroached, and AT is not Delaunay.
+// Claim (protection balls, Line 9 and Figure 5.17): on a triangle template with an acute corner
+// (5.7°-42°) reflected across both legs, Technique 5.8 with protection balls ends within its
+// round cap and every interior edge of AT is locally Delaunay (AT is then a constrained Delaunay
+// triangulation of its non-convex domain). Dropped (points at midpoints, no protection balls):
+// the legs' pieces keep encroaching on each other and the cap is hit (ping-pong encroachment).
 #include "proofs-checks/adaptation_support.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/adapt/make_delaunay.h"
@@ -53,9 +58,38 @@ void delaunay_after_technique_5_8(const GeneratedStructure<2>& s, bool boundary_
                        picture(s));
 }
 
+void ends_with_protection_balls(const GeneratedStructure<2>& s, bool protection_balls) {
+  Structure<2> y = s.x;
+  bool ended = true;
+  try {
+    const auto report = adapt::make_delaunay(y, 32, protection_balls);
+    RC_TAG(std::to_string(report.rounds) + " rounds");
+  } catch (const std::runtime_error&) {
+    ended = false;
+  }
+  SYMMESH_PROOF_ASSERT(ended, record(s), picture(s));
+  SYMMESH_PROOF_ASSERT(is_templated_mesh<2>(y), record(s), picture(s));
+  SYMMESH_PROOF_ASSERT(doubled_area(y) == doubled_area(s.x), record(s), picture(s));
+  const auto at = core::apply_template(y).at.mesh;
+  for (const auto& e : at.elements_of_dimension(1))
+    if (adapt::co_cells(at, e).size() == 2)
+      SYMMESH_PROOF_ASSERT(core::is_locally_delaunay_in(at, e), record(s), picture(s));
+}
+
 } // namespace
 
 void register_technique_5_8(std::vector<Property>& p) {
+  p.push_back(
+      {kClaim, "protection_balls_end_ping_pong_2d", 2, Kind::holds,
+       "Technique 5.8 with protection balls: on a triangle template with an acute "
+       "corner reflected across both legs it ends within 32 rounds, and every interior "
+       "edge of AT is locally Delaunay (exact)",
+       [] {
+         return rc::detail::toProperty([] { ends_with_protection_balls(*acute_wedge(), true); });
+       },
+       [] {
+         return rc::detail::toProperty([] { ends_with_protection_balls(*acute_wedge(), false); });
+       }});
   p.push_back({kClaim, "structure_instance_is_delaunay_2d", 2, Kind::holds,
                "Technique 5.8: on convex, right-angled planar templated meshes (translation "
                "grids of boxes) it ends with a templated mesh of the same area "
