@@ -4,7 +4,7 @@
 # (fuzz/corpus/<harness>/, which `make test` replays). Writes docs/fuzzing.md: executions,
 # coverage (libFuzzer's cov: edges) and findings per harness, with the machine and the command.
 # Usage: [FUZZ_PARALLEL=1] bash fuzz/run.sh [seconds per harness] [harness...]   (default 120,
-# all four; FUZZ_PARALLEL=1 runs them side by side).
+# all four; FUZZ_PARALLEL=1 runs them side by side; FUZZ_REPORT_ONLY=1 only rewrites the report).
 # Findings go to build-fuzz/<harness>/{crash,timeout,oom}-*; copy each into fuzz/corpus/<harness>/
 # once fixed, so that it stays a regression test. Under ASan+UBSan an input costs ~15x its
 # Release time; -timeout=60 flags only real hangs.
@@ -14,13 +14,16 @@ secs=${1:-120}
 shift || true
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate adapt)
+report=docs/fuzzing.md
+# FUZZ_REPORT_ONLY=1 runs nothing: it rewrites the report from the harnesses' last rows
+# (build-fuzz/<harness>/row), e.g. after an older run that overlapped this one wrote its own.
+if [ "${FUZZ_REPORT_ONLY:-0}" != 1 ]; then
 bash scripts/install-deps.sh --fuzz
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DSYMMESH_FUZZ=ON -DSYMMESH_BUILD_TESTS=OFF -DSYMMESH_BUILD_PYTHON=OFF -DSYMMESH_WERROR=OFF
 targets=()
 for h in "${harnesses[@]}"; do targets+=("fuzz_$h"); done
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
-report=docs/fuzzing.md
 # One campaign; its row goes to build-fuzz/<harness>/row, collected below in the given order.
 campaign() {
   local h=$1 work=build-fuzz/$1
@@ -57,6 +60,7 @@ if [ "${FUZZ_PARALLEL:-0}" = 1 ]; then
 else
   for h in "${harnesses[@]}"; do campaign "$h"; done
 fi
+fi
 # The report is composed when the campaigns end, under a lock, from the report as it is then:
 # rows of harnesses not run this time are kept, so that two runs may overlap (each its own
 # harnesses) without losing the other's rows.
@@ -79,10 +83,12 @@ part=$(mktemp "$report.XXXXXX")
   if [ -f "$report" ]; then
     grep -E '^\| [a-z_]+ \| [0-9]' "$report" | while read -r row; do
       name=$(echo "$row" | awk -F'|' '{gsub(/ /, "", $2); print $2}')
-      case " ${harnesses[*]} " in *" $name "*) ;; *) echo "$row" ;; esac
+      # A harness of this run without a new row (its campaign did not finish) keeps its old one.
+      [ -f "build-fuzz/$name/row" ] && case " ${harnesses[*]} " in *" $name "*) continue ;; esac
+      echo "$row"
     done
   fi
-  for h in "${harnesses[@]}"; do cat "build-fuzz/$h/row"; done
+  for h in "${harnesses[@]}"; do [ ! -f "build-fuzz/$h/row" ] || cat "build-fuzz/$h/row"; done
   echo
   echo "## Findings saved as regression inputs"
   echo
