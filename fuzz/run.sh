@@ -28,6 +28,23 @@ confirm_timeouts() {
     fi
   done
 }
+# Every finished campaign is one line of fuzz/campaigns.csv (kept in git): the harness, the
+# SHA-256 of its source when the campaign started, when its log ended, seconds, executions,
+# coverage and findings. A campaign is recorded once (by harness and log time), also when
+# FUZZ_REPORT_ONLY=1 reads its log again. The report sums the campaigns of each harness's
+# current source: executions of the same checks, possibly over a library that changed between
+# campaigns (each campaign starts from the saved inputs of the one before).
+campaigns=fuzz/campaigns.csv
+harness_sha() { sha256sum "fuzz/fuzz_$1.cpp" | cut -c1-12; }
+record_campaign() {
+  local h=$1 work=build-fuzz/$1 sha ended
+  # A campaign run before run.sh kept harness.sha has no known source: "unknown".
+  sha=$(cat "$work/harness.sha" 2>/dev/null || echo unknown)
+  ended=$(date -u -d "@$(stat -c %Y "$work/campaign.log")" +%Y-%m-%dT%H:%M:%SZ)
+  [ -f "$campaigns" ] || echo "harness,harness_sha256,ended_utc,seconds,executions,coverage,findings" > "$campaigns"
+  grep -q "^$h,[0-9a-f]*,$ended," "$campaigns" && return 0
+  echo "$h,$sha,$ended,${2// /_},$3,$4,$5" >> "$campaigns"
+}
 # The row of a harness from its campaign log: the seconds it ran (the given ones, or executions /
 # average rate when a finding stopped it early), executions, coverage, corpus size and findings.
 write_row() {
@@ -46,6 +63,7 @@ write_row() {
   local note=""
   [ "$unrepro" = 0 ] || note=" ($unrepro timeout under load stopped it; alone it ran within the limit)"
   echo "| $h | $day | $ran | ${runs:-?} | ${cov:-?} | $files | $findings$note |" > "$work/row"
+  record_campaign "$h" "$ran" "${runs:-0}" "${cov:-0}" "$findings"
   echo "fuzz: $h: ${runs:-?} executions, cov ${cov:-?}, $findings findings$note (log $log)" >&2
 }
 # FUZZ_REPORT_ONLY=1 runs nothing: it rewrites the report from the harnesses' last rows
@@ -63,6 +81,7 @@ campaign() {
   mkdir -p "$work/corpus"
   rm -f "$work"/crash-* "$work"/timeout-* "$work"/oom-* "$work"/leak-* "$work"/unreproduced-* "$work/row"
   cp fuzz/corpus/"$h"/* "$work/corpus/" 2>/dev/null || true
+  harness_sha "$h" > "$work/harness.sha"
   local log=$work/campaign.log
   # The adaptation harness reads 3 bytes per operation: 31 bytes = up to 10 operations.
   local max_len=4096
@@ -123,6 +142,24 @@ part=$(mktemp "$report.XXXXXX")
     done
   fi
   for h in "${harnesses[@]}"; do [ ! -f "build-fuzz/$h/row" ] || cat "build-fuzz/$h/row"; done
+  echo
+  echo "## All campaigns of each harness's current source"
+  echo
+  echo "Summed from \`fuzz/campaigns.csv\` (one line per campaign) over the campaigns whose harness"
+  echo "source is the one in this commit: the same checks, each campaign starting from the inputs the"
+  echo "ones before it saved; the library may have changed between them."
+  echo
+  echo "| harness | source SHA-256 | campaigns | seconds | executions | findings |"
+  echo "|---|---|---|---|---|---|"
+  for f in fuzz/fuzz_*.cpp; do
+    h=${f#fuzz/fuzz_}
+    h=${h%.cpp}
+    sha=$(harness_sha "$h")
+    [ -f "$campaigns" ] || break
+    awk -F, -v h="$h" -v sha="$sha" '$1 == h && $2 == sha {
+        n++; e += $5; f += $7; s = $4; sub(/^about_/, "", s); t += s }
+      END { if (n) printf "| %s | %s | %d | %d | %d | %d |\n", h, sha, n, t, e, f }' "$campaigns"
+  done
   echo
   echo "## Findings saved as regression inputs"
   echo

@@ -220,6 +220,45 @@ PYEOF
   else fail "$angle-degree wedge: $(cat "$TMP/stderr" 2>/dev/null) $msg"; fi
 done
 
+# Protection balls in 3D, along acute creases: a triangular prism (the wedge above extruded to
+# height 1, three tetrahedra) reflected across both leg faces. With a 44-degree crease the shells
+# around crease vertices end Technique 5.8 (before them it hit the 16-round cap); with a
+# 10-degree crease they do not (spec/adaptation.md): exit 1 naming the encroachment, no file.
+for angle in 44 10; do
+  $PY - "$angle" "$TMP/prism$angle.tmesh" <<'PYEOF'
+import json, math, sys
+a = math.radians(float(sys.argv[1]))
+refl = lambda t: {"matrix": [math.cos(2 * t), math.sin(2 * t), 0.0, math.sin(2 * t), -math.cos(2 * t), 0.0,
+                             0.0, 0.0, 1.0], "translation": [0.0, 0.0, 0.0]}
+v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.7 * math.cos(a), 0.7 * math.sin(a), 0.0],
+     [0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.7 * math.cos(a), 0.7 * math.sin(a), 1.0]]
+def volume(t):
+    u = [[v[t[k]][i] - v[t[0]][i] for i in range(3)] for k in (1, 2, 3)]
+    return (u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) - u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0])
+            + u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0]))
+cells = [t if volume(t) > 0 else [t[0], t[1], t[3], t[2]] for t in ([0, 1, 2, 3], [1, 2, 3, 4], [2, 3, 4, 5])]
+identity = {"matrix": [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0], "translation": [0.0, 0.0, 0.0]}
+json.dump({"symmesh": "templated-mesh/1", "dimension": 3,
+           "templates": [{"vertices": v, "cells": cells,
+                          "instances": [{"transformation": k, "region": 1} for k in range(3)]}],
+           "transformations": [identity, refl(0.0), refl(a)],
+           "identification_tables": [{"from_template": 0, "to_template": 0, "pairs": p} for p in
+                                     ([[0, 0], [1, 1], [3, 3], [4, 4]], [[0, 0], [2, 2], [3, 3], [5, 5]], [[0, 0], [3, 3]])],
+           "identifications": [[0, 1, 0], [0, 2, 1], [1, 2, 2]]}, open(sys.argv[2], "w"))
+PYEOF
+  "$BIN" adapt "$TMP/prism$angle.tmesh" --delaunay --max-rounds 16 -o "$TMP/prism$angle.a.tmesh" \
+    --vtu "$TMP/prism$angle.a.vtu" --report "$TMP/prism$angle.a.json" --quiet 2> "$TMP/stderr"
+  rc=$?
+  if [ "$angle" = 44 ]; then
+    if [ $rc = 0 ] && msg=$($PY tests/cli/delaunay_check.py "$TMP/prism$angle.a.vtu" 2>&1); then
+      pass "3D prism, 44-degree crease: Delaunay after $($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][0]['delaunay'])" "$TMP/prism$angle.a.json") rounds ($msg)"
+    else fail "3D prism, 44-degree crease: exit $rc $(cat "$TMP/stderr") $msg"; fi
+  elif [ $rc = 1 ] && grep -q "ping-pong encroachment" "$TMP/stderr" \
+      && [ ! -e "$TMP/prism$angle.a.tmesh" ] && [ ! -e "$TMP/prism$angle.a.vtu" ]; then
+    pass "3D prism, 10-degree crease: exit 1, no file ($(cut -c1-90 "$TMP/stderr"))"
+  else fail "3D prism, 10-degree crease: exit $rc, $(cat "$TMP/stderr"), $(ls "$TMP" | grep prism10)"; fi
+done
+
 # The round cap of Technique 5.8 ends in exit 1 naming the edge, not in a hang: the refined
 # mosfet needs a round of interface insertions, and --max-rounds 0 allows flips only.
 "$BIN" adapt "$TMP/mosfet.tmesh" --refine-where "x > 0" -o "$TMP/mr.tmesh" --quiet

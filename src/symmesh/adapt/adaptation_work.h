@@ -137,6 +137,10 @@ using CellTest = std::function<bool(const Cell&)>;
 /// balls (Section 5.2.5, Figure 5.17). Protection is a property of the point of AT, so it is
 /// closed under the identification tables (a corner of one template protects its copies).
 using Protected = std::vector<std::vector<char>>;
+/// The protected vertices of every template: 2D, boundary vertices where the template's cells
+/// meet with an angle sum below 90°; 3D, the ends of template boundary edges where they meet
+/// with a dihedral angle sum below 60° (acute creases). Closed under the identification tables.
+Protected acute_corners(const Session& s);
 
 std::array<double, 3> sub3(const double* a, const double* b);
 std::array<double, 3> cross3(const std::array<double, 3>& u, const std::array<double, 3>& v);

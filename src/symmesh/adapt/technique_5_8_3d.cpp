@@ -627,8 +627,8 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
   const auto limit = [&](const std::string& what) {
     s.store();
     throw AdaptationLimit("Technique 5.8 in 3D: " + what +
-                          " (ping-pong encroachment, Figure 5.17; protection balls are not "
-                          "implemented)");
+                          " (ping-pong encroachment, Figure 5.17: shells around acute "
+                          "creases end it at 44 degrees, not at sharper creases)");
   };
   const auto cell_count = [&] {
     std::size_t n = 0;
@@ -692,7 +692,10 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
             " more) still belongs to an encroached or not template-aware locally Delaunay "
             "triangle");
     }
-    rep.bisections += bisect(s, bad);
+    // Protection balls: recomputed every round, as the points put on an acute crease are
+    // protected too (in 2D the corners are the input's and never move).
+    const auto protect = acute_corners(s);
+    rep.bisections += bisect(s, bad, &protect);
     ++rep.rounds;
     if (progress) {
       std::size_t cells = 0;

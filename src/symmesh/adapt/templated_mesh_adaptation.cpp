@@ -171,23 +171,56 @@ void split_edge(Work& w, IndexType a, IndexType b, IndexType m) {
   }
 }
 
-/// A boundary vertex protected in a template whose cells meet at it with an angle sum below 90°.
+/// 2D: the boundary vertices at which the template's cells meet with an angle sum below 90°.
+std::vector<char> acute_corners_2d(const Work& w) {
+  std::vector<double> angle(w.vertex_count(), 0);
+  for (const auto& c : w.cells)
+    for (int k = 0; k < 3; ++k) {
+      const double *o = w.p(c[std::size_t(k)]), *a = w.p(c[std::size_t((k + 1) % 3)]),
+                   *b = w.p(c[std::size_t((k + 2) % 3)]);
+      const double u[2] = {a[0] - o[0], a[1] - o[1]}, v[2] = {b[0] - o[0], b[1] - o[1]};
+      angle[std::size_t(c[std::size_t(k)])] += angle_between(u, v, 2);
+    }
+  const auto on = boundary_vertices(w);
+  std::vector<char> acute(w.vertex_count(), 0);
+  for (std::size_t v = 0; v < acute.size(); ++v) acute[v] = on[v] && angle[v] < 90;
+  return acute;
+}
+
+/// 3D: the ends of the template boundary edges at which the template's cells meet with a
+/// dihedral angle sum below 60° — the acute creases. In a cross-section through a crease the
+/// crease is an acute corner; a point put on the crease is protected like its ends. Ping-pong
+/// encroachment needs angles of at most 45° (Section 5.2.5). With 90° as in 2D, the slices of
+/// the 16-, 32- and 128-TSV had protected creases (between 60° and 90°) whose shell points made
+/// slivers that no flip or vertex move removed.
+std::vector<char> acute_creases_3d(const Work& w) {
+  std::map<std::pair<IndexType, IndexType>, double> dihedral;
+  for (const auto& c : w.cells)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        int k = 0;
+        while (k == i || k == j) ++k;
+        const int l = 6 - i - j - k;
+        const IndexType a = c[std::size_t(i)], b = c[std::size_t(j)];
+        // The angle between the normals of faces (a, b, c_k) and (a, b, c_l) is the cell's
+        // dihedral angle at edge ab.
+        const auto ab = sub3(w.p(b), w.p(a));
+        const auto n1 = cross3(ab, sub3(w.p(c[std::size_t(k)]), w.p(a)));
+        const auto n2 = cross3(ab, sub3(w.p(c[std::size_t(l)]), w.p(a)));
+        dihedral[{std::min(a, b), std::max(a, b)}] += angle_between(n1.data(), n2.data(), 3);
+      }
+  std::vector<char> acute(w.vertex_count(), 0);
+  for (const auto& [e, angle] : dihedral)
+    if (angle < 60 && is_boundary_edge(w, e.first, e.second))
+      acute[std::size_t(e.first)] = acute[std::size_t(e.second)] = 1;
+  return acute;
+}
+
+/// The protected vertices: acute template corners (2D) or crease ends (3D), closed under the
+/// identification tables.
 Protected acute_corners(const Session& s) {
   Protected out;
-  for (const auto& w : s.w) {
-    std::vector<double> angle(w.vertex_count(), 0);
-    for (const auto& c : w.cells)
-      for (int k = 0; k < 3; ++k) {
-        const double *o = w.p(c[std::size_t(k)]), *a = w.p(c[std::size_t((k + 1) % 3)]),
-                     *b = w.p(c[std::size_t((k + 2) % 3)]);
-        const double u[2] = {a[0] - o[0], a[1] - o[1]}, v[2] = {b[0] - o[0], b[1] - o[1]};
-        angle[std::size_t(c[std::size_t(k)])] += angle_between(u, v, 2);
-      }
-    const auto on = boundary_vertices(w);
-    std::vector<char> acute(w.vertex_count(), 0);
-    for (std::size_t v = 0; v < acute.size(); ++v) acute[v] = on[v] && angle[v] < 90;
-    out.push_back(std::move(acute));
-  }
+  for (const auto& w : s.w) out.push_back(w.d == 2 ? acute_corners_2d(w) : acute_creases_3d(w));
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& table : s.t.tables)
