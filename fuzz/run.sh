@@ -134,7 +134,8 @@ part=$(mktemp "$report.XXXXXX")
   echo "| harness | date | seconds | executions | coverage (edges) | corpus | findings |"
   echo "|---|---|---|---|---|---|---|"
   if [ -f "$report" ]; then
-    grep -E '^\| [a-z_]+ \| [0-9]' "$report" | while read -r row; do
+    # Campaign rows only (a date in the second column), not the sums below.
+    grep -E '^\| [a-z_]+ \| [0-9]{4}-[0-9]{2}-[0-9]{2} \|' "$report" | while read -r row; do
       name=$(echo "$row" | awk -F'|' '{gsub(/ /, "", $2); print $2}')
       # A harness of this run without a new row (its campaign did not finish) keeps its old one.
       [ -f "build-fuzz/$name/row" ] && case " ${harnesses[*]} " in *" $name "*) continue ;; esac
@@ -151,6 +152,7 @@ part=$(mktemp "$report.XXXXXX")
   echo
   echo "| harness | source SHA-256 | campaigns | seconds | executions | findings |"
   echo "|---|---|---|---|---|---|"
+  [ -f "$campaigns" ] || echo "| (no campaign recorded yet) | | | | | |"
   for f in fuzz/fuzz_*.cpp; do
     h=${f#fuzz/fuzz_}
     h=${h%.cpp}
