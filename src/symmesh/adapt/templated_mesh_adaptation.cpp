@@ -233,55 +233,84 @@ Protected acute_corners(const Session& s) {
   return out;
 }
 
-/// Where edge {a, b} is split: its midpoint, or — when exactly one end is a protected corner —
-/// the point at the power of two nearest to half the length from that end (concentric shells:
-/// the pieces next to a corner then have power-of-two lengths, so the two sides of an acute
-/// corner end with equal pieces and stop encroaching on each other). The rule only looks at
-/// the length and at which end is protected, which related edges share, so every copy is split
-/// at the same point of AT.
-void split_point(const Work& w, IndexType a, IndexType b, const std::vector<char>* protect,
-                 double* q) {
+/// Whether exactly one end of {a, b} is protected, and which: the end the split is measured from.
+bool protected_end(IndexType a, IndexType b, const std::vector<char>* protect, IndexType& from,
+                   IndexType& to) {
   const auto is = [&](IndexType v) {
     return protect && std::size_t(v) < protect->size() && (*protect)[std::size_t(v)];
   };
-  double f = 0.5;
+  from = is(b) ? b : a;
+  to = from == a ? b : a;
+  return is(a) != is(b);
+}
+
+/// Where edge {a, b} is split, as a fraction of its length from its protected end: 1/2, or —
+/// when exactly one end is a protected corner — the power of two nearest to half the length
+/// (concentric shells: the pieces next to a corner then have power-of-two lengths, so the two
+/// sides of an acute corner end with equal pieces and stop encroaching on each other).
+double split_fraction(const Work& w, IndexType a, IndexType b, const std::vector<char>* protect) {
   IndexType from = a, to = b;
-  if (is(a) != is(b)) {
-    if (is(b)) std::swap(from, to);
-    double ll = 0;
-    for (int i = 0; i < w.d; ++i) ll += std::pow(w.p(to)[i] - w.p(from)[i], 2);
-    const double length = std::sqrt(ll);
-    f = std::exp2(std::round(std::log2(length / 2))) / length; // in [0.35, 0.71]
-  }
+  if (!protected_end(a, b, protect, from, to)) return 0.5;
+  double ll = 0;
+  for (int i = 0; i < w.d; ++i) ll += std::pow(w.p(to)[i] - w.p(from)[i], 2);
+  const double length = std::sqrt(ll);
+  return std::exp2(std::round(std::log2(length / 2))) / length; // in [0.35, 0.71]
+}
+
+/// The point at fraction f of edge {a, b} from its protected end (from a when none is).
+void split_point(const Work& w, IndexType a, IndexType b, const std::vector<char>* protect,
+                 double f, double* q) {
+  IndexType from = a, to = b;
+  protected_end(a, b, protect, from, to);
   for (int i = 0; i < w.d; ++i) q[i] = w.p(from)[i] + f * (w.p(to)[i] - w.p(from)[i]);
+}
+
+/// Calls visit(r) for every edge r related to e through one table (either way), and keeps going
+/// from every r for which visit returns true.
+template <class Visit>
+void walk_related(const Session& s, const std::vector<TableIndex>& index, const TemplateEdge& e,
+                  Visit&& visit) {
+  std::vector<TemplateEdge> stack{e};
+  while (!stack.empty()) {
+    const auto x = stack.back();
+    stack.pop_back();
+    for (std::size_t k = 0; k < s.t.tables.size(); ++k)
+      for (bool forward : {true, false}) {
+        TemplateEdge r;
+        if (related_edge(s, index, k, forward, x, r) && visit(r)) stack.push_back(r);
+      }
+  }
 }
 
 std::size_t bisect(Session& s, const std::vector<TemplateEdge>& edges, const Protected* protect) {
   const auto index = index_tables(s.t);
   std::set<TemplateEdge> closure;
-  std::vector<TemplateEdge> queue;
   for (const auto& e : edges) {
     const auto n = edge_of(e.t, e.a, e.b);
     if (e.t >= s.w.size() || s.w[e.t].cells_with({n.a, n.b}).empty())
       throw std::invalid_argument("bisect: {" + std::to_string(e.a) + ", " + std::to_string(e.b) +
                                   "} is no edge of template " + std::to_string(e.t));
-    if (closure.insert(n).second) queue.push_back(n);
+    if (closure.insert(n).second)
+      walk_related(s, index, n, [&](const TemplateEdge& r) { return closure.insert(r).second; });
   }
-  while (!queue.empty()) {
-    const auto e = queue.back();
-    queue.pop_back();
-    for (std::size_t k = 0; k < s.t.tables.size(); ++k)
-      for (bool forward : {true, false}) {
-        TemplateEdge r;
-        if (related_edge(s, index, k, forward, e, r) && closure.insert(r).second)
-          queue.push_back(r);
-      }
+  // One split fraction per class of related edges, taken from its first edge: the copies'
+  // lengths differ by the rounding of their templates' coordinates, and two copies of one edge
+  // of AT must not round to different shells (related ends share protection, so the fraction
+  // is measured from the same end of AT's edge).
+  const auto protect_of = [&](std::size_t t) { return protect ? &(*protect)[t] : nullptr; };
+  std::map<TemplateEdge, double> fraction;
+  for (const auto& root : closure) {
+    if (fraction.count(root)) continue;
+    const double f = split_fraction(s.w[root.t], root.a, root.b, protect_of(root.t));
+    fraction.emplace(root, f);
+    walk_related(s, index, root,
+                 [&](const TemplateEdge& r) { return fraction.emplace(r, f).second; });
   }
   std::map<TemplateEdge, IndexType> mid;
   for (const auto& e : closure) {
     auto& w = s.w[e.t];
     double q[3];
-    split_point(w, e.a, e.b, protect ? &(*protect)[e.t] : nullptr, q);
+    split_point(w, e.a, e.b, protect_of(e.t), fraction.at(e), q);
     const IndexType m = w.add_vertex(q);
     split_edge(w, e.a, e.b, m);
     mid[e] = m;
