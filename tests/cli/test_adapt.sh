@@ -29,6 +29,8 @@ for name in $names; do
     pass "$name adapted: $(echo "$msg" | tail -1)"; else fail "$name adapted: $msg"; fi
   if msg=$($PY tests/cli/delaunay_check.py "$TMP/$name.a.vtu" 2>&1); then
     pass "$name adapted: $msg"; else fail "$name adapted, Delaunay: $msg"; fi
+  if msg=$($PY tests/cli/identified_points_check.py "$TMP/$name.a.tmesh" 2>&1); then
+    pass "$name adapted: $msg"; else fail "$name adapted, identified points: $msg"; fi
   r=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][-1]['delaunay'])" "$TMP/$name.a.json")
   rounds_total=$((rounds_total + r))
   m=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][1]['boundary_moves'])" "$TMP/$name.a.json")
@@ -153,6 +155,8 @@ for case in "cube-halves - -" "finfet 0 0" "tsv-8 8 1" "tsv-16 16 1" "tsv-32 32 
     pass "$name made Delaunay: $(echo "$msg" | tail -1)"; else fail "$name made Delaunay: $msg"; fi
   if msg=$($PY tests/cli/delaunay_check.py "$TMP/$name.d.vtu" 2>&1); then
     pass "$name: $msg"; else fail "$name, Delaunay: $msg"; fi
+  if msg=$($PY tests/cli/identified_points_check.py "$TMP/$name.d.tmesh" 2>&1); then
+    pass "$name: $msg"; else fail "$name, identified points: $msg"; fi
   if [ "$2" != - ]; then
     if msg=$($PY tests/cli/symmetry_check.py "$TMP/$name.d.vtu" "$2" "$3" 2>&1); then
       pass "$name made Delaunay, under its symmetry ($2, $3): $msg"; else fail "$name, symmetry: $msg"; fi
@@ -219,6 +223,38 @@ PYEOF
     pass "$angle-degree wedge: Delaunay after $($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][0]['delaunay'])" "$TMP/wedge$angle.a.json") rounds ($msg)"
   else fail "$angle-degree wedge: $(cat "$TMP/stderr" 2>/dev/null) $msg"; fi
 done
+
+# Related edges split on one shell: a wedge template (10-degree corner, two cells) reflected across
+# its first leg, and its reflection across the second leg given as a second template in its own
+# rounded coordinates. The second leg is 1/sqrt(2) long, half of it 2^-1.5, where the shell
+# rounds: computed from each template's coordinates, the copies' lengths round to different
+# shells (2^-2 and 2^-1). Before one fraction per class of related edges, the two copies of the
+# split point were identified 0.25 and 0.49 from the corner, and the certificate (combinatorial)
+# passed; identified_points_check.py looks at the coordinates.
+$PY - "$TMP/shell.tmesh" <<'PYEOF'
+import json, math, sys
+a = math.radians(10)
+l = 0.7071067811865476
+c2, s2 = math.cos(2 * a), math.sin(2 * a)
+v = [[0.0, 0.0], [0.3, 0.0], [l * math.cos(a), l * math.sin(a)], [1.0, 0.0]]
+w = [[c2 * p[0] + s2 * p[1], s2 * p[0] - c2 * p[1]] for p in v]
+json.dump({"symmesh": "templated-mesh/1", "dimension": 2,
+           "templates": [{"vertices": v, "cells": [[0, 1, 2], [1, 3, 2]],
+                          "instances": [{"transformation": 0, "region": 1}, {"transformation": 1, "region": 1}]},
+                         {"vertices": w, "cells": [[0, 2, 1], [1, 2, 3]],
+                          "instances": [{"transformation": 0, "region": 1}]}],
+           "transformations": [{"matrix": [1.0, 0.0, 0.0, 1.0], "translation": [0.0, 0.0]},
+                               {"matrix": [1.0, 0.0, 0.0, -1.0], "translation": [0.0, 0.0]}],
+           "identification_tables": [{"from_template": 0, "to_template": 0, "pairs": [[0, 0], [1, 1], [3, 3]]},
+                                     {"from_template": 0, "to_template": 1, "pairs": [[0, 0], [2, 2]]},
+                                     {"from_template": 0, "to_template": 1, "pairs": [[0, 0]]}],
+           "identifications": [[0, 1, 0], [0, 2, 1], [1, 2, 2]]}, open(sys.argv[1], "w"))
+PYEOF
+if "$BIN" adapt "$TMP/shell.tmesh" --delaunay -o "$TMP/shell.a.tmesh" --report "$TMP/shell.a.json" \
+    --quiet 2> "$TMP/stderr" && msg=$($PY tests/cli/identified_points_check.py "$TMP/shell.a.tmesh" 2>&1) \
+    && [ "$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][0]['edges_bisected'])" "$TMP/shell.a.json")" -gt 0 ]; then
+  pass "related edges near a shell boundary split at one point of AT: $msg"
+else fail "related edges near a shell boundary: $(cat "$TMP/stderr") $msg"; fi
 
 # Protection balls in 3D, along acute creases: a triangular prism (the wedge above extruded to
 # height 1, three tetrahedra) reflected across both leg faces. With a 44-degree crease the shells
