@@ -255,6 +255,17 @@ if "$BIN" adapt "$TMP/shell.tmesh" --delaunay -o "$TMP/shell.a.tmesh" --report "
     && [ "$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][0]['edges_bisected'])" "$TMP/shell.a.json")" -gt 0 ]; then
   pass "related edges near a shell boundary split at one point of AT: $msg"
 else fail "related edges near a shell boundary: $(cat "$TMP/stderr") $msg"; fi
+# The certificate looks at coordinates too: an input whose identified pair lies apart (template
+# 1's vertex 2 moved by 1e-3) is refused, exit 2, naming the pair.
+$PY -c "
+import json, sys
+t = json.load(open(sys.argv[1]))
+t['templates'][1]['vertices'][2][0] += 1e-3
+json.dump(t, open(sys.argv[2], 'w'))" "$TMP/shell.tmesh" "$TMP/apart.tmesh"
+expect_exit 2 "identified pair apart in the input" -- "$BIN" adapt "$TMP/apart.tmesh" --delaunay -o "$TMP/apart.a.tmesh"
+grep -q "instance 0 vertex 2 and instance 2 vertex 2 are identified but lie apart" "$TMP/stderr" \
+  && pass "the identified pair apart is named" || fail "identified pair apart: $(cat "$TMP/stderr")"
+[ ! -e "$TMP/apart.a.tmesh" ] && pass "no output for it" || fail "output written for an input with a pair apart"
 
 # Protection balls in 3D, along acute creases: a triangular prism (the wedge above extruded to
 # height 1, three tetrahedra) reflected across both leg faces. With a 44-degree crease the shells

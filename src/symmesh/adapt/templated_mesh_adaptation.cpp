@@ -1170,6 +1170,24 @@ ConformityCertificate certify_conformity(const mesh::TemplatedMeshCompactSvb& t,
                                             std::pow(u[0] * v[1] - u[1] * v[0], 2));
     }
   }
+  // The identification is combinatorial; the coordinates must agree with it, or the writers
+  // (one coordinate per AT vertex) would distort the cells of every instance but one. Agreement
+  // is up to the rounding of the two transformations, like the boundary measure below.
+  for (const auto& id : t.identifications) {
+    const auto i = std::size_t(id.from_instance), j = std::size_t(id.to_instance);
+    for (const auto& [a, b] : t.tables[std::size_t(id.table)].pairs) {
+      double x[3] = {}, y[3] = {};
+      s.transformation(i).apply(s.w[s.template_of[i]].p(a), x);
+      s.transformation(j).apply(s.w[s.template_of[j]].p(b), y);
+      for (int k = 0; k < s.w[s.template_of[i]].d; ++k)
+        if (std::abs(x[k] - y[k]) > 1e-9 * (1 + std::abs(x[k]))) {
+          fail("instance " + std::to_string(i) + " vertex " + std::to_string(a) + " and instance " +
+               std::to_string(j) + " vertex " + std::to_string(b) +
+               " are identified but lie apart by more than rounding");
+          break;
+        }
+    }
+  }
   // The measure is a sum of rounded terms; a hanging vertex doubles a whole interface's share.
   if (expected_boundary >= 0 &&
       std::abs(r.boundary_measure - expected_boundary) > 1e-9 * std::max(1.0, expected_boundary))

@@ -132,7 +132,9 @@ double smallest_quality(const mesh::TemplatedMeshCompactSvb& t);
 /// A combinatorial certificate that AT conforms: every template cell is positively oriented
 /// (exact), no facet of AT (vertices numbered through the SVB) lies in more than two cells, and
 /// the measure of AT's boundary facets is `expected_boundary` (a vertex hanging on an interface
-/// leaves the interface's facets on the boundary of both sides).
+/// leaves the interface's facets on the boundary of both sides). And the coordinates agree with
+/// the numbering: the two instances of every identified vertex pair put it at one point, up to
+/// the rounding of their transformations (1e-9 relative).
 struct ConformityCertificate {
   bool holds = true;
   std::string why;
