@@ -9,6 +9,10 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 BENCH_BUILD ?= build-bench
+# ccache keys on the compiler's command line, which names the checkout's absolute paths; with the
+# checkout as base directory they are relative, so a second clone (CI, a fresh-clone check)
+# reuses the objects the first one compiled.
+export CCACHE_BASEDIR ?= $(CURDIR)
 
 .PHONY: all deps configure build demo test bench clean format fuzz
 
