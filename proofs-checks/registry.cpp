@@ -39,6 +39,7 @@ void register_section_5_2_1(std::vector<Property>&);
 void register_section_5_2_2(std::vector<Property>&);
 void register_section_5_2_3(std::vector<Property>&);
 void register_section_5_2_4(std::vector<Property>&);
+void register_section_5_2_6(std::vector<Property>&);
 void register_technique_5_8(std::vector<Property>&);
 
 const std::vector<Property>& all_properties() {
@@ -72,6 +73,7 @@ const std::vector<Property>& all_properties() {
                          register_section_5_2_2,
                          register_section_5_2_3,
                          register_section_5_2_4,
+                         register_section_5_2_6,
                          register_technique_5_8})
       f(p);
     return p;

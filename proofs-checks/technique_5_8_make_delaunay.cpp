@@ -22,15 +22,14 @@
 // templates are only re-tetrahedralized): on the block on its base, interface triangles are not
 // locally Delaunay.
 #include "proofs-checks/adaptation_support.h"
+#include "proofs-checks/box_inputs.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/adapt/make_delaunay.h"
 #include "symmesh/adapt/templated_mesh_adaptation.h"
-#include "symmesh/api/generate_run.h"
 #include "symmesh/core/delaunay.h"
 #include "symmesh/mesh/structure_instance.h"
 
 #include <gmpxx.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -109,105 +108,7 @@ void ends_with_protection_balls(const GeneratedStructure<2>& s, bool protection_
 // the other. With every interior triangle locally Delaunay, AT is a constrained Delaunay
 // tetrahedralization of its domain, Delaunay where the domain is convex (the grids).
 
-/// Box templates given as PLCs (six faces each), each instanced by translations or x-mirrors, and
-/// the generation size. Sides are kept as twice their value (integers), so the JSON is exact.
-struct BoxInput {
-  struct Box {
-    std::array<int, 6> twice; ///< x0, x1, y0, y1, z0, z1, times two
-    /// Per instance: twice its translation and whether x is mirrored first (x -> -x).
-    std::vector<std::pair<std::array<int, 3>, bool>> instances;
-  };
-  std::vector<Box> boxes;
-  double size = 1;
-
-  static std::string half(int twice) {
-    return twice % 2 ? std::to_string(twice) + "/2" : std::to_string(twice / 2);
-  }
-  nlohmann::json document() const {
-    using J = nlohmann::json;
-    J templates = J::array();
-    for (std::size_t n = 0; n < boxes.size(); ++n) {
-      const auto& b = boxes[n];
-      J vertices = J::array();
-      for (std::size_t k = 0; k < 8; ++k)
-        vertices.push_back(J::array({half(b.twice[k & 1]), half(b.twice[2 + ((k >> 1) & 1)]),
-                                     half(b.twice[4 + ((k >> 2) & 1)])}));
-      J instances = J::array();
-      for (const auto& [t, mirrored] : b.instances) {
-        const J shift = J::array({half(t[0]), half(t[1]), half(t[2])});
-        instances.push_back(J{
-            {"transformation", mirrored ? J{{"signed_permutation", J{{"perm", J::array({0, 1, 2})},
-                                                                     {"sign", J::array({-1, 1, 1})},
-                                                                     {"translation", shift}}}}
-                                        : J{{"translation", shift}}},
-            {"region", 1}});
-      }
-      templates.push_back(J{{"name", "box" + std::to_string(n)},
-                            {"kind", "geometry"},
-                            {"vertices", vertices},
-                            {"faces", J::array({J::array({0, 2, 3, 1}), J::array({4, 5, 7, 6}),
-                                                J::array({0, 1, 5, 4}), J::array({2, 6, 7, 3}),
-                                                J::array({0, 4, 6, 2}), J::array({1, 3, 7, 5})})},
-                            {"instances", instances}});
-    }
-    return J{{"symmesh", "templated-structure/1"}, {"dimension", 3}, {"templates", templates}};
-  }
-  /// The union's volume, exactly (the instances do not overlap).
-  mpq_class volume() const {
-    mpq_class v = 0;
-    for (const auto& b : boxes)
-      v += mpq_class((b.twice[1] - b.twice[0]) * (b.twice[3] - b.twice[2]) *
-                     (b.twice[5] - b.twice[4]) * int(b.instances.size()));
-    v /= 8;
-    v.canonicalize(); // gmpxx compares representations: 16/8 != 2
-    return v;
-  }
-};
-
-/// A grid of kx × ky × kz boxes [0,a]×[0,b]×[0,c] (a, b, c ∈ {1, 3/2, 2}), one template
-/// instanced by translations; or every odd column along x the mirror image of its neighbour.
-/// Right dihedral angles only, a convex union. Size: the shortest side or half of it.
-rc::Gen<BoxInput> box_grid() {
-  return rc::gen::suchThat(
-      rc::gen::apply(
-          [](int a2, int b2, int c2, int kx, int ky, int kz, bool mirrored, int divisor) {
-            BoxInput in;
-            BoxInput::Box b{{0, a2, 0, b2, 0, c2}, {}};
-            for (int i = 0; i < kx; ++i)
-              for (int j = 0; j < ky; ++j)
-                for (int k = 0; k < kz; ++k) {
-                  // x -> (i+1)a - x maps [0,a] onto [ia, (i+1)a].
-                  const bool m = mirrored && i % 2;
-                  b.instances.push_back({{(m ? i + 1 : i) * a2, j * b2, k * c2}, m});
-                }
-            in.boxes.push_back(b);
-            in.size = 0.5 * std::min({a2, b2, c2}) / divisor;
-            return in;
-          },
-          rc::gen::inRange(2, 5), rc::gen::inRange(2, 5), rc::gen::inRange(2, 5),
-          rc::gen::inRange(1, 4), rc::gen::inRange(1, 3), rc::gen::inRange(1, 3),
-          rc::gen::arbitrary<bool>(), rc::gen::inRange(1, 3)),
-      [](const BoxInput& in) { return in.boxes[0].instances.size() >= 2; });
-}
-
-/// A block on a base slab (two templates, instanced once), the block's bottom covering a corner
-/// part of the base's top face (a T-junction of the boundary patches), at a size of about 3/4:
-/// the two templates' cells along the partly shared face are made independently, and made
-/// Delaunay inside each template they still leave interface triangles that are not
-/// template-aware locally Delaunay.
-rc::Gen<BoxInput> block_on_base() {
-  return rc::gen::apply(
-      [](int base2, int height2, int block_x2, int block_y2, int block_h2, int size_step) {
-        BoxInput in;
-        in.boxes.push_back({{0, base2, 0, base2, 0, height2}, {{{0, 0, 0}, false}}});
-        in.boxes.push_back(
-            {{0, block_x2, 0, block_y2, height2, height2 + block_h2}, {{{0, 0, 0}, false}}});
-        in.size = 0.7 + 0.05 * size_step;
-        return in;
-      },
-      rc::gen::inRange(4, 7), rc::gen::inRange(1, 3), rc::gen::inRange(2, 5),
-      rc::gen::inRange(2, 5), rc::gen::inRange(1, 4), rc::gen::inRange(0, 3));
-}
+using boxes::BoxInput;
 
 using ExactPoint = std::array<mpq_class, 3>;
 
@@ -352,14 +253,10 @@ DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSvb& t) {
 }
 
 void delaunay_after_technique_5_8_3d(const BoxInput& g, bool boundary_insertions) {
-  const std::string text = g.document().dump() + "\n(size " + std::to_string(g.size) + ")";
+  const std::string text = g.description();
   const auto failure = [&] { return text; };
   const auto no_picture = [] { return std::string(); };
-  api::RunOptions o;
-  o.size = g.size;
-  auto t = api::run_generation(api::parse_structure_text(g.document().dump(), "boxes"), "boxes", o)
-               .templated;
-  adapt::expand_identifications(t);
+  auto t = g.generate();
   const double boundary = adapt::certify_conformity(t).boundary_measure;
   try {
     // Dropped (Lines 6-18): no round of boundary insertions, the templates are only
@@ -375,7 +272,7 @@ void delaunay_after_technique_5_8_3d(const BoxInput& g, bool boundary_insertions
   RC_TAG(verdict.inside_by_rounding ? "ties inside a template decided by rounding"
                                     : "no tie decided by rounding");
   SYMMESH_PROOF_ASSERT(verdict.overfull == 0, failure, no_picture);
-  SYMMESH_PROOF_ASSERT(verdict.volume == g.volume(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(verdict.volume == g.measure(), failure, no_picture);
   SYMMESH_PROOF_ASSERT(
       verdict.not_locally_delaunay == 0,
       [&] {
@@ -420,13 +317,13 @@ void register_technique_5_8(std::vector<Property>& p) {
                "|D|/L^5 <= 1e-9 are the library's documented allowance)",
                [] {
                  return rc::detail::toProperty([] {
-                   delaunay_after_technique_5_8_3d(*rc::gen::oneOf(box_grid(), block_on_base()),
-                                                   true);
+                   delaunay_after_technique_5_8_3d(
+                       *rc::gen::oneOf(boxes::box_grid(3), boxes::block_on_base(3)), true);
                  });
                },
                [] {
                  return rc::detail::toProperty(
-                     [] { delaunay_after_technique_5_8_3d(*block_on_base(), false); });
+                     [] { delaunay_after_technique_5_8_3d(*boxes::block_on_base(3), false); });
                }});
 }
 

@@ -643,10 +643,12 @@ bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve
   bool changed = false;
   for (std::size_t m = 0; m < moves.size(); ++m) {
     const auto& w = s.w[moves[m].t];
+    // The sum, then one division: a coordinate that every link vertex shares (the plane of a
+    // flat patch parallel to an axis) is then kept exactly, so the vertex stays on its face.
     at[m] = {0, 0, 0};
     for (IndexType u : moves[m].link)
-      for (int i = 0; i < w.d; ++i)
-        at[m][std::size_t(i)] += w.p(u)[i] / double(moves[m].link.size());
+      for (int i = 0; i < w.d; ++i) at[m][std::size_t(i)] += w.p(u)[i];
+    for (int i = 0; i < w.d; ++i) at[m][std::size_t(i)] /= double(moves[m].link.size());
     for (int i = 0; i < w.d; ++i) {
       old[m][std::size_t(i)] = w.p(moves[m].v)[i];
       changed = changed || at[m][std::size_t(i)] != old[m][std::size_t(i)];
@@ -702,7 +704,8 @@ SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only) {
         around.erase(v);
         double q[3] = {0, 0, 0};
         for (IndexType u : around)
-          for (int i = 0; i < w.d; ++i) q[i] += w.p(u)[i] / double(around.size());
+          for (int i = 0; i < w.d; ++i) q[i] += w.p(u)[i];
+        for (int i = 0; i < w.d; ++i) q[i] /= double(around.size());
         bool valid = true;
         double before = 180, after = 180;
         for (IndexType ci : w.inc[std::size_t(v)]) {

@@ -1,0 +1,173 @@
+// Generated templated meshes of boxes, for the properties of the adaptation operations that act on
+// generated meshes (.tmesh: adapt/templated_mesh_adaptation.h) — spec/adaptation.md#properties
+//
+// The input is a templated geometry of axis-parallel boxes (rectangles in 2D) given as PLCs
+// (polygons in 2D), generated as `symmesh generate` does (api::run_generation). Right angles only,
+// so no acute input angle; the sides are multiples of 1/2, so the JSON and the volume are exact.
+#pragma once
+#include "symmesh/adapt/templated_mesh_adaptation.h"
+#include "symmesh/api/generate_run.h"
+
+#include <gmpxx.h>
+#include <nlohmann/json.hpp>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace symmesh::proofs::boxes {
+
+/// Box templates, each instanced by translations or by mirrors in x followed by a translation,
+/// and the generation size. Coordinates are kept as twice their value (integers).
+struct BoxInput {
+  struct Box {
+    std::vector<int> twice; ///< x0, x1, y0, y1 (, z0, z1), times two
+    /// Per instance: twice its translation and whether x is mirrored first (x -> -x).
+    std::vector<std::pair<std::vector<int>, bool>> instances;
+  };
+  int dimension = 3;
+  std::vector<Box> boxes;
+  double size = 1;
+
+  static std::string half(int twice) {
+    return twice % 2 ? std::to_string(twice) + "/2" : std::to_string(twice / 2);
+  }
+  /// The box's corner k (bit i of k: the upper side in coordinate i).
+  nlohmann::json corner(const Box& b, int k) const {
+    auto p = nlohmann::json::array();
+    for (int i = 0; i < dimension; ++i)
+      p.push_back(half(b.twice[std::size_t(2 * i + ((k >> i) & 1))]));
+    return p;
+  }
+  nlohmann::json transformation(const std::vector<int>& shift, bool mirrored) const {
+    using J = nlohmann::json;
+    J t = J::array(), perm = J::array(), sign = J::array();
+    for (int i = 0; i < dimension; ++i) {
+      t.push_back(half(shift[std::size_t(i)]));
+      perm.push_back(i);
+      sign.push_back(mirrored && i == 0 ? -1 : 1);
+    }
+    if (!mirrored) return J{{"translation", t}};
+    return J{{"signed_permutation", J{{"perm", perm}, {"sign", sign}, {"translation", t}}}};
+  }
+  nlohmann::json document() const {
+    using J = nlohmann::json;
+    J templates = J::array();
+    for (std::size_t n = 0; n < boxes.size(); ++n) {
+      const auto& b = boxes[n];
+      J instances = J::array();
+      for (const auto& [shift, mirrored] : b.instances)
+        instances.push_back(J{{"transformation", transformation(shift, mirrored)}, {"region", 1}});
+      J t{{"name", "box" + std::to_string(n)}, {"kind", "geometry"}, {"instances", instances}};
+      if (dimension == 2) {
+        t["polygon"] = J::array({corner(b, 0), corner(b, 1), corner(b, 3), corner(b, 2)});
+      } else {
+        J vertices = J::array();
+        for (int k = 0; k < 8; ++k) vertices.push_back(corner(b, k));
+        t["vertices"] = vertices;
+        t["faces"] =
+            J::array({J::array({0, 2, 3, 1}), J::array({4, 5, 7, 6}), J::array({0, 1, 5, 4}),
+                      J::array({2, 6, 7, 3}), J::array({0, 4, 6, 2}), J::array({1, 3, 7, 5})});
+      }
+      templates.push_back(t);
+    }
+    return J{
+        {"symmesh", "templated-structure/1"}, {"dimension", dimension}, {"templates", templates}};
+  }
+  /// The text a failing case records: the document and the size.
+  std::string description() const {
+    return document().dump() + "\n(size " + std::to_string(size) + ")";
+  }
+  /// The union's area or volume, exactly (the instances do not overlap).
+  mpq_class measure() const {
+    mpq_class v = 0;
+    for (const auto& b : boxes) {
+      mpz_class box = int(b.instances.size());
+      for (int i = 0; i < dimension; ++i)
+        box *= b.twice[std::size_t(2 * i + 1)] - b.twice[std::size_t(2 * i)];
+      v += box;
+    }
+    v /= dimension == 2 ? 4 : 8;
+    v.canonicalize(); // gmpxx compares representations: 16/8 != 2
+    return v;
+  }
+  /// The generated templated mesh, its identifications expanded for the adaptation operations.
+  mesh::TemplatedMeshCompactSvb generate() const {
+    api::RunOptions o;
+    o.size = size;
+    auto t = api::run_generation(api::parse_structure_text(document().dump(), "boxes"), "boxes", o)
+                 .templated;
+    adapt::expand_identifications(t);
+    return t;
+  }
+};
+
+/// A grid of boxes with sides 1, 3/2 or 2: 1-3 along x, 1-2 along the other axes, at least two,
+/// one template instanced by translations, or every odd column along x the mirror image of its
+/// neighbour. Convex. Size: the shortest side or half of it.
+inline rc::Gen<BoxInput> box_grid(int dimension) {
+  return rc::gen::suchThat(
+      rc::gen::apply(
+          [dimension](std::vector<int> sides2, std::vector<int> counts, bool mirrored,
+                      int divisor) {
+            BoxInput in;
+            in.dimension = dimension;
+            BoxInput::Box b;
+            for (int i = 0; i < dimension; ++i) {
+              b.twice.push_back(0);
+              b.twice.push_back(sides2[std::size_t(i)]);
+            }
+            const int ny = counts[1], nz = dimension == 3 ? counts[2] : 1;
+            for (int i = 0; i < counts[0]; ++i)
+              for (int j = 0; j < ny; ++j)
+                for (int k = 0; k < nz; ++k) {
+                  // x -> (i+1)a - x maps [0,a] onto [ia, (i+1)a].
+                  const bool m = mirrored && i % 2;
+                  std::vector<int> shift{(m ? i + 1 : i) * sides2[0], j * sides2[1]};
+                  if (dimension == 3) shift.push_back(k * sides2[2]);
+                  b.instances.push_back({shift, m});
+                }
+            in.boxes.push_back(b);
+            in.size = 0.5 * *std::min_element(sides2.begin(), sides2.begin() + dimension) / divisor;
+            return in;
+          },
+          rc::gen::container<std::vector<int>>(3, rc::gen::inRange(2, 5)),
+          rc::gen::apply(
+              [](int x, int y, int z) {
+                return std::vector<int>{x, y, z};
+              },
+              rc::gen::inRange(1, 4), rc::gen::inRange(1, 3), rc::gen::inRange(1, 3)),
+          rc::gen::arbitrary<bool>(), rc::gen::inRange(1, 3)),
+      [](const BoxInput& in) { return in.boxes[0].instances.size() >= 2; });
+}
+
+/// A block on a base slab (two templates, instanced once), the block's bottom covering a corner
+/// part of the base's top side: a T-junction of the boundary patches, a non-convex union; size
+/// 0.7-0.8. Meshed independently, the cells along the partly shared side do not match: made
+/// Delaunay inside each template they still leave interface facets that are not template-aware
+/// locally Delaunay (in 3D).
+inline rc::Gen<BoxInput> block_on_base(int dimension) {
+  return rc::gen::apply(
+      [dimension](int base2, int height2, int block_x2, int block_y2, int block_h2, int size_step) {
+        BoxInput in;
+        in.dimension = dimension;
+        const std::vector<int> origin(std::size_t(dimension), 0);
+        if (dimension == 2) {
+          in.boxes.push_back({{0, base2, 0, height2}, {{origin, false}}});
+          in.boxes.push_back({{0, block_x2, height2, height2 + block_h2}, {{origin, false}}});
+        } else {
+          in.boxes.push_back({{0, base2, 0, base2, 0, height2}, {{origin, false}}});
+          in.boxes.push_back(
+              {{0, block_x2, 0, block_y2, height2, height2 + block_h2}, {{origin, false}}});
+        }
+        in.size = 0.7 + 0.05 * size_step;
+        return in;
+      },
+      rc::gen::inRange(4, 7), rc::gen::inRange(1, 3), rc::gen::inRange(2, 5),
+      rc::gen::inRange(2, 5), rc::gen::inRange(1, 4), rc::gen::inRange(0, 3));
+}
+
+} // namespace symmesh::proofs::boxes
