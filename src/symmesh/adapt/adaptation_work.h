@@ -154,6 +154,10 @@ int orientation(const Work& w, const Cell& c, IndexType moved = -1, const double
 double angle_between(const double* u, const double* v, int d);
 /// Smallest angle (triangle) or dihedral angle (tetrahedron) in degrees; 0 for a flat cell.
 double cell_quality(const Work& w, const Cell& c, IndexType moved = -1, const double* at = nullptr);
+/// Positive and not flat to rounding (d!·|cell| / L^d > 1e-9): smoothing moves and the 3D
+/// sliver removal keep every cell so.
+bool robustly_positive(const Work& w, const Cell& c, IndexType moved = -1,
+                       const double* at = nullptr);
 /// The smallest quality of the given cells.
 double min_quality(const Work& w, std::initializer_list<Cell> cells);
 /// The facets (d vertices, sorted) of a cell.

@@ -339,23 +339,6 @@ std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> non_ld_facets(cons
   return out;
 }
 
-/// Whether a cell is positive and not flat to rounding: 6 V / L^3 > 1e-9 (V its volume, L its
-/// longest edge). AT's writers use one coordinate per shared vertex, taken from one of its
-/// instances, so a cell of a rotated instance is written with coordinates that differ from its
-/// own image by rounding; only a cell this far from flat is positive in every written copy.
-bool robustly_positive(const Work& w, const Cell& c) {
-  if (orientation(w, c) <= 0) return false;
-  const auto u = sub3(w.p(c[1]), w.p(c[0])), v = sub3(w.p(c[2]), w.p(c[0])),
-             x = sub3(w.p(c[3]), w.p(c[0]));
-  double longest = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      const auto e = sub3(w.p(c[std::size_t(i)]), w.p(c[std::size_t(j)]));
-      longest = std::max(longest, dot3(e, e));
-    }
-  longest = std::sqrt(longest);
-  return dot3(cross3(u, v), x) > 1e-9 * longest * longest * longest;
-}
 std::size_t remove_slivers(Session& s) {
   std::size_t flips = 0;
   for (std::size_t t = 0; t < s.w.size(); ++t) {

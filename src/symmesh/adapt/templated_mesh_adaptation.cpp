@@ -49,33 +49,33 @@ int orientation(const Work& w, const Cell& c, IndexType moved, const double* at)
   return int(CGAL::orientation(p3(q(0)), p3(q(1)), p3(q(2)), p3(q(3))));
 }
 
-/// A smoothing move keeps a cell only when it stays positive (exact) and not flat to rounding:
-/// d!·|cell| / L^d > 1e-9 (L its longest edge). A cell with a tiny positive volume is valid but
-/// its later bisection at a rounded midpoint, or its written copy in other coordinates, can be
-/// inverted (fuzz_adapt: plain Laplacian smoothing of the 8-TSV, then --refine-where, left a
-/// child tetrahedron with orientation <= 0).
-bool clearly_positive(const Work& w, const Cell& c, IndexType moved, const double* at) {
+/// Positive (exact) and not flat to rounding: d!·|cell| / L^d > 1e-9, L the longest edge, with
+/// vertex `moved` read at `at` if given. AT's writers use one coordinate per shared vertex, taken
+/// from one of its instances, so a cell is written with coordinates that differ from its own
+/// image by rounding; and a later bisection puts its midpoint at a rounded place. Only a cell this
+/// far from flat stays positive in every written copy and in its children (a smoothing that kept
+/// cells merely positive let fuzz_adapt invert a child after --refine-where on the 8-TSV).
+bool robustly_positive(const Work& w, const Cell& c, IndexType moved, const double* at) {
   if (orientation(w, c, moved, at) <= 0) return false;
   const auto q = [&](int k) {
     const IndexType v = c[std::size_t(k)];
     return v == moved ? at : w.p(v);
   };
-  double longest = 0, e[3][3] = {};
+  double longest = 0;
   for (int i = 0; i <= w.d; ++i)
     for (int j = i + 1; j <= w.d; ++j) {
       double l = 0;
       for (int k = 0; k < w.d; ++k) l += (q(i)[k] - q(j)[k]) * (q(i)[k] - q(j)[k]);
-      longest = std::max(longest, std::sqrt(l));
+      longest = std::max(longest, l);
     }
-  for (int i = 1; i <= w.d; ++i)
-    for (int k = 0; k < w.d; ++k) e[i - 1][k] = q(i)[k] - q(0)[k];
-  const double measure = w.d == 2
-                             ? std::abs(e[0][0] * e[1][1] - e[0][1] * e[1][0]) / (longest * longest)
-                             : std::abs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                                        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                                        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-                                   (longest * longest * longest);
-  return measure > 1e-9;
+  longest = std::sqrt(longest);
+  if (w.d == 2) {
+    const double cross =
+        (q(1)[0] - q(0)[0]) * (q(2)[1] - q(0)[1]) - (q(1)[1] - q(0)[1]) * (q(2)[0] - q(0)[0]);
+    return cross > 1e-9 * longest * longest;
+  }
+  const auto u = sub3(q(1), q(0)), v = sub3(q(2), q(0)), x = sub3(q(3), q(0));
+  return dot3(cross3(u, v), x) > 1e-9 * longest * longest * longest;
 }
 
 double angle_between(const double* u, const double* v, int d) {
@@ -703,7 +703,7 @@ bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve
   bool valid = true;
   for (const auto& m : moves)
     for (IndexType ci : s.w[m.t].inc[std::size_t(m.v)])
-      valid = valid && clearly_positive(s.w[m.t], s.w[m.t].cells[std::size_t(ci)], -1, nullptr);
+      valid = valid && robustly_positive(s.w[m.t], s.w[m.t].cells[std::size_t(ci)]);
   if (valid && improve_only) valid = around_quality() > before;
   if (!valid) place(old);
   return valid;
@@ -739,7 +739,7 @@ SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only) {
         double before = 180, after = 180;
         for (IndexType ci : w.inc[std::size_t(v)]) {
           const auto& c = w.cells[std::size_t(ci)];
-          valid = valid && clearly_positive(w, c, v, q);
+          valid = valid && robustly_positive(w, c, v, q);
           if (improve_only) {
             before = std::min(before, cell_quality(w, c));
             after = std::min(after, cell_quality(w, c, v, q));
