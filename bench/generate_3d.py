@@ -15,7 +15,10 @@ command (start-up, reading, generation, certificate, writing the binary .vtu) is
 process with its peak RSS (wait4). Writes generate_3d.csv (every run), generate_3d_summary.csv
 (medians and ratios), the plot and the Markdown report, so that no figure is edited by hand.
 
-Usage: generate_3d.py SYMMESH OUTDIR [--repeats R] [--counts C1,C2,...]
+Usage: generate_3d.py SYMMESH OUTDIR [--repeats R] [--counts C1,C2,...] [--note TEXT]
+
+The report states the 1-minute load average at the start and the end of the run, so that a run
+beside other work (e.g. a niced fuzz campaign on the other core) says so; --note adds a line.
 """
 import argparse
 import csv
@@ -102,7 +105,8 @@ def main():
     ap.add_argument("symmesh")
     ap.add_argument("outdir")
     ap.add_argument("--repeats", type=int, default=3)
-    ap.add_argument("--counts", default="1e4,1e5,1e6")
+    ap.add_argument("--counts", default="1e4,1e5,1e6,3e6")
+    ap.add_argument("--note", default="", help="one more line for the report, e.g. what else ran")
     ap.add_argument("--no-gmsh", action="store_true", help="leave the Gmsh 3D peer out")
     ap.add_argument("--no-huge", action="store_true", help="leave the 10^8 run out")
     a = ap.parse_args()
@@ -113,6 +117,7 @@ def main():
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True).stdout.strip()
     started = time.perf_counter()
+    a.load_start = os.getloadavg()[0]
     rows = []
     objects = [(f"tsv-{n}", n, tsv_volume(n)) for n in TSVS] + [("finfet", 4, FINFET_VOLUME),
                                                                ("multi-tsv", 32, MULTI_TSV_VOLUME)]
@@ -136,6 +141,7 @@ def main():
             print(f"tsv-128 h={HUGE_SIZE} templated only: {huge['cells_structure_instance']} tets, "
                   f"{huge['seconds_process']:.1f} s, {huge['rss_process_bytes'] / 2**30:.2f} GiB", flush=True)
     wall = time.perf_counter() - started
+    a.load_end = os.getloadavg()[0]
     os.makedirs(a.outdir, exist_ok=True)
     fields = list(rows[0].keys())
     with open(os.path.join(a.outdir, "generate_3d.csv"), "w", newline="") as f:
@@ -218,7 +224,9 @@ def write_report(a, summary, largest, wall, commit, huge):
          f"- machine: {platform.machine()}, {os.cpu_count()} cores, {cpu}, {platform.platform()}; "
          f"symmesh at commit {commit}",
          f"- command: `bench/generate_3d.py {a.symmesh} {a.outdir} --repeats {a.repeats} "
-         f"--counts {a.counts}`; wall time {wall:.0f} s",
+         f"--counts {a.counts}" + (f" --note '{a.note}'" if a.note else "") +
+         f"`; wall time {wall:.0f} s; 1-minute load average {a.load_start:.2f} at the start, "
+         f"{a.load_end:.2f} at the end" + (f"; {a.note}" if a.note else ""),
          f"- medians of {a.repeats} repeats, interleaved in one run: templated (`--method auto`, "
          "the rotational slices of Section 6.3 with Algorithm 5.7: TetGen once per slice template) "
          "(reflective for the FinFET, bpp for the multi-TSV) and conventional (`--method "

@@ -40,6 +40,7 @@ void register_section_5_2_2(std::vector<Property>&);
 void register_section_5_2_3(std::vector<Property>&);
 void register_section_5_2_4(std::vector<Property>&);
 void register_section_5_2_6(std::vector<Property>&);
+void register_section_6_3(std::vector<Property>&);
 void register_technique_5_8(std::vector<Property>&);
 
 const std::vector<Property>& all_properties() {
@@ -74,6 +75,7 @@ const std::vector<Property>& all_properties() {
                          register_section_5_2_3,
                          register_section_5_2_4,
                          register_section_5_2_6,
+                         register_section_6_3,
                          register_technique_5_8})
       f(p);
     return p;

@@ -6,6 +6,7 @@
 #include "symmesh/gen/surface_meshes_3d.h"
 
 #include "symmesh/core/interface_conformity.h"
+#include "symmesh/core/slice_of_copies.h"
 #include "symmesh/gen/rotation_order.h"
 #include "symmesh/mesh/union_find.h"
 
@@ -200,11 +201,12 @@ core::Lemma42Verdict certify_copies(const core::TemplatedStructure<FT, 3>& x,
 /// non-consecutive copies touch (e.g. slices meeting only on the axis), because their interfaces
 /// would be neither partitioned nor certified. Up to the rotation it suffices to decide the
 /// pairs (copy 0, copy j), 2 <= j <= n/2, exactly (geometry_interface_nonempty on the carriers).
-/// Returns the first touching pair as text, or nothing.
+/// Returns the first touching pair as text, or nothing. When copy 0 lies in a slice of angle
+/// 2π/n off the axis, no pair needs deciding (spec/lemmas.md#slice-separation).
 template <class FT>
 std::optional<std::string> non_consecutive_contact(const core::TemplatedStructure<FT, 3>& x,
                                                    std::size_t n) {
-  if (n < 4) return std::nullopt;
+  if (n < 4 || core::slice_of_copy_zero(x, n)) return std::nullopt;
   // Certified interval boxes of the carriers' cells of copy k of every template filter the
   // candidates; only copies whose boxes meet copy 0's are decided exactly.
   const auto cell_boxes = [&](std::size_t k) {

@@ -413,7 +413,7 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
   }
   const double symmetry_seconds = seconds_since(t0_symmetry);
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap(x, rotations))
+  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
   GenerationResult r;
   // The subdivision and the mappings say which faces meet; their classes are not used.

@@ -332,7 +332,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   const double symmetry_seconds = seconds_since(t0);
   const long symmetry_faults = minor_faults() - f0;
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap(x, rotations))
+  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
   const auto bpp = support::boundary_patch_stage(rotational || group ? two_copies : x, o,
                                                  symmetry_seconds, symmetry_faults, r);

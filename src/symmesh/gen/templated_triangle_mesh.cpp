@@ -4,6 +4,7 @@
 
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/line_mesh_conformity.h"
+#include "symmesh/core/slice_of_copies.h"
 #include "symmesh/gen/generation_support.h"
 #include "symmesh/gen/gmsh_mesher.h"
 #include "symmesh/gen/interface_merging.h"
@@ -367,7 +368,7 @@ GenerationResult generate(const core::TemplatedStructure<FT, 2>& x, const Genera
     if (o.progress) o.progress->stage(name, total, unit);
   };
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap(x, rotations))
+  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations))
     throw std::invalid_argument(core::overlap_message(*overlap));
   GenerationResult r;
   auto t0 = Clock::now(); // the copies' preparation is timed with the BPP
