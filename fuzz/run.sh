@@ -3,8 +3,10 @@
 # and runs a time-boxed campaign per harness, each starting from its saved corpus
 # (fuzz/corpus/<harness>/, which `make test` replays). Writes docs/fuzzing.md: executions,
 # coverage (libFuzzer's cov: edges) and findings per harness, with the machine and the command.
-# Usage: [FUZZ_PARALLEL=1] bash fuzz/run.sh [seconds per harness] [harness...]   (default 120,
-# all four; FUZZ_PARALLEL=1 runs them side by side; FUZZ_REPORT_ONLY=1 only rewrites the report).
+# Usage: [FUZZ_PARALLEL=1] [FUZZ_WORKERS=N] bash fuzz/run.sh [seconds per harness] [harness...]
+# (default 120, all four; FUZZ_PARALLEL=1 runs them side by side; FUZZ_WORKERS=N runs N processes
+# per harness on one shared corpus, as libFuzzer's -jobs does; FUZZ_REPORT_ONLY=1 only rewrites
+# the report).
 # Findings go to build-fuzz/<harness>/{crash,timeout,oom}-*; copy each into fuzz/corpus/<harness>/
 # once fixed, so that it stays a regression test. Under ASan+UBSan an input costs ~15x its
 # Release time; -timeout=60 flags only real hangs.
@@ -41,30 +43,42 @@ record_campaign() {
   # A campaign run before run.sh kept harness.sha has no known source: "unknown".
   sha=$(cat "$work/harness.sha" 2>/dev/null || echo unknown)
   ended=$(date -u -d "@$(stat -c %Y "$work/campaign.log")" +%Y-%m-%dT%H:%M:%SZ)
-  [ -f "$campaigns" ] || echo "harness,harness_sha256,ended_utc,seconds,executions,coverage,findings" > "$campaigns"
+  [ -f "$campaigns" ] || echo "harness,harness_sha256,ended_utc,seconds,executions,coverage,findings,processes" > "$campaigns"
   grep -q "^$h,[0-9a-f]*,$ended," "$campaigns" && return 0
-  echo "$h,$sha,$ended,${2// /_},$3,$4,$5" >> "$campaigns"
+  echo "$h,$sha,$ended,${2// /_},$3,$4,$5,$6" >> "$campaigns"
 }
-# The row of a harness from its campaign log: the seconds it ran (the given ones, or executions /
-# average rate when a finding stopped it early), executions, coverage, corpus size and findings.
+# The row of a harness from its campaign logs (campaign.log, and campaign.wK.log for the workers
+# K = 2..N): the wall seconds it ran (the given ones, or executions / average rate when findings
+# stopped every process early), executions summed over the processes, coverage (the largest of
+# theirs: they share one corpus), corpus size and findings.
 write_row() {
-  local h=$1 day=$2 work=build-fuzz/$1 log=build-fuzz/$1/campaign.log
+  local h=$1 day=$2 work=build-fuzz/$1
   confirm_timeouts "$h"
-  local runs rate cov files findings unrepro ran=${3:-$secs}
-  runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
-  rate=$(grep -oE 'stat::average_exec_per_sec: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
-  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+')
+  local runs=0 cov=0 files findings unrepro ran=${3:-$secs} n=0 stopped=0 longest=0 log r a c
+  for log in "$work/campaign.log" "$work"/campaign.w*.log; do
+    [ -f "$log" ] || continue
+    n=$((n + 1))
+    r=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
+    a=$(grep -oE 'stat::average_exec_per_sec: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
+    c=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+')
+    runs=$((runs + ${r:-0}))
+    [ "${c:-0}" -le "$cov" ] || cov=$c
+    if grep -qE '^SUMMARY: libFuzzer|ERROR: libFuzzer' "$log" && [ "${a:-0}" -gt 0 ]; then
+      stopped=$((stopped + 1))
+      [ $((r / a)) -le "$longest" ] || longest=$((r / a))
+    fi
+  done
+  [ "$n" -gt 0 ] && [ "$stopped" != "$n" ] || ran="about $longest"
   files=$(ls "$work/corpus" | wc -l)
   findings=$(ls "$work" | grep -cE '^(crash|timeout|oom|leak)-' || true)
   unrepro=$(ls "$work" | grep -cE '^unreproduced-' || true)
-  if grep -qE '^SUMMARY: libFuzzer|ERROR: libFuzzer' "$log" && [ "${rate:-0}" -gt 0 ]; then
-    ran="about $((runs / rate))"
-  fi
   local note=""
   [ "$unrepro" = 0 ] || note=" ($unrepro timeout under load stopped it; alone it ran within the limit)"
-  echo "| $h | $day | $ran | ${runs:-?} | ${cov:-?} | $files | $findings$note |" > "$work/row"
-  record_campaign "$h" "$ran" "${runs:-0}" "${cov:-0}" "$findings"
-  echo "fuzz: $h: ${runs:-?} executions, cov ${cov:-?}, $findings findings$note (log $log)" >&2
+  local procs=""
+  [ "$n" -le 1 ] || procs=" ($n processes)"
+  echo "| $h | $day | $ran$procs | $runs | $cov | $files | $findings$note |" > "$work/row"
+  record_campaign "$h" "$ran" "$runs" "$cov" "$findings" "$n"
+  echo "fuzz: $h: $runs executions in $n processes, cov $cov, $findings findings$note" >&2
 }
 # FUZZ_REPORT_ONLY=1 runs nothing: it rewrites the report from the harnesses' last rows
 # (build-fuzz/<harness>/row), e.g. after an older run that overlapped this one wrote its own.
@@ -80,6 +94,7 @@ campaign() {
   local h=$1 work=build-fuzz/$1
   mkdir -p "$work/corpus"
   rm -f "$work"/crash-* "$work"/timeout-* "$work"/oom-* "$work"/leak-* "$work"/unreproduced-* "$work/row"
+  rm -f "$work"/campaign.w*.log
   cp fuzz/corpus/"$h"/* "$work/corpus/" 2>/dev/null || true
   harness_sha "$h" > "$work/harness.sha"
   local log=$work/campaign.log
@@ -92,10 +107,19 @@ campaign() {
   # the adaptation harness's (60 -> 130 inputs/s).
   local extra=()
   [ "$h" = generate ] || extra=(-entropic=0)
+  # Workers share the corpus directory: each rereads it (-reload=1, libFuzzer's default) and so
+  # picks up what the others found.
+  local k pids=()
   set +e
-  ASAN_OPTIONS=malloc_context_size=0 ./build-fuzz/fuzz/fuzz_"$h" "$work/corpus" \
-    -max_total_time="$secs" -max_len="$max_len" -timeout=60 -rss_limit_mb=4096 \
-    -print_final_stats=1 -artifact_prefix="$work/" "${extra[@]}" > "$log" 2>&1
+  for ((k = 1; k <= ${FUZZ_WORKERS:-1}; k++)); do
+    [ "$k" = 1 ] || log=$work/campaign.w$k.log
+    ASAN_OPTIONS=malloc_context_size=0 ./build-fuzz/fuzz/fuzz_"$h" "$work/corpus" \
+      -max_total_time="$secs" -max_len="$max_len" -timeout=60 -rss_limit_mb=4096 -reload=1 \
+      -print_final_stats=1 -artifact_prefix="$work/" "${extra[@]}" \
+      > "$log" 2>&1 &
+    pids+=($!)
+  done
+  wait "${pids[@]}"
   set -e
   write_row "$h" "$(date -u +%Y-%m-%d)"
 }
@@ -114,7 +138,7 @@ if [ "${FUZZ_REPORT_ONLY:-0}" = 1 ]; then
   for h in "${harnesses[@]}"; do
     [ -f "build-fuzz/$h/row" ] || continue
     write_row "$h" "$(awk -F'|' '{gsub(/ /, "", $3); print $3}' "build-fuzz/$h/row")" \
-      "$(awk -F'|' '{gsub(/^ +| +$/, "", $4); print $4}' "build-fuzz/$h/row")"
+      "$(awk -F'|' '{sub(/ \(.*/, "", $4); gsub(/^ +| +$/, "", $4); print $4}' "build-fuzz/$h/row")"
   done
 fi
 exec 9> build-fuzz/report.lock
@@ -129,7 +153,9 @@ part=$(mktemp "$report.XXXXXX")
   echo "inputs: fuzz/corpus/<harness>/, replayed by \`make test\` (ctest fuzz.replay_*). A finding is"
   echo "fixed and then saved in the corpus, so that it stays a regression test. A row's campaign ran"
   echo "alone on its core or beside others (FUZZ_PARALLEL=1, or overlapping runs); the machine's other"
-  echo "core was not kept idle, so executions per second are lower bounds."
+  echo "core was not kept idle, so executions per second are lower bounds. \"(N processes)\" marks a"
+  echo "campaign of N processes on one shared corpus (FUZZ_WORKERS=N): its seconds are wall seconds, its"
+  echo "executions the sum over the processes."
   echo
   echo "| harness | date | seconds | executions | coverage (edges) | corpus | findings |"
   echo "|---|---|---|---|---|---|---|"
@@ -150,7 +176,7 @@ part=$(mktemp "$report.XXXXXX")
   echo "source is the one in this commit: the same checks, each campaign starting from the inputs the"
   echo "ones before it saved; the library may have changed between them."
   echo
-  echo "| harness | source SHA-256 | campaigns | seconds | executions | findings |"
+  echo "| harness | source SHA-256 | campaigns | process-seconds | executions | findings |"
   echo "|---|---|---|---|---|---|"
   [ -f "$campaigns" ] || echo "| (no campaign recorded yet) | | | | | |"
   for f in fuzz/fuzz_*.cpp; do
@@ -159,7 +185,7 @@ part=$(mktemp "$report.XXXXXX")
     sha=$(harness_sha "$h")
     [ -f "$campaigns" ] || break
     awk -F, -v h="$h" -v sha="$sha" '$1 == h && $2 == sha {
-        n++; e += $5; f += $7; s = $4; sub(/^about_/, "", s); t += s }
+        n++; e += $5; f += $7; s = $4; sub(/^about_/, "", s); t += s * ($8 == "" ? 1 : $8) }
       END { if (n) printf "| %s | %s | %d | %d | %d | %d |\n", h, sha, n, t, e, f }' "$campaigns"
   done
   echo
