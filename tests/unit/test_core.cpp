@@ -371,6 +371,50 @@ TEST(Predicates, SeparationFiltersNeverContradictTheExactLP3D) {
   separation_filters_agree_with_lp<3>();
 }
 
+// The conformity check of a mesh (find_nonconformity) meets mostly neighbours: elements that share
+// vertices but are not faces of one another. For those the candidate planes must certify the
+// separation on their own — through the shared points, which weakly_separated tries first — so
+// that the exact LP is left to the rare pairs the candidates miss. Checked on the Kuhn
+// tetrahedralization of a 2x2x2 grid of unit cubes (6 tetrahedra per cube along the diagonal),
+// every pair of its face completion that shares a vertex.
+TEST(Predicates, SeparationCertifiesEveryNeighbourPairOfAConformingMesh) {
+  ElementComplex<Exact, 3> m;
+  const auto id = [](int x, int y, int z) { return VertexId(x + 3 * y + 9 * z); };
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x) m.points.push_back(p3(x, y, z));
+  std::array<int, 3> perm{0, 1, 2};
+  for (int cube = 0; cube < 8; ++cube) {
+    std::sort(perm.begin(), perm.end());
+    do {
+      std::array<int, 3> c{cube % 2, (cube / 2) % 2, cube / 4};
+      std::vector<VertexId> v{id(c[0], c[1], c[2])};
+      for (int k : perm) {
+        ++c[k];
+        v.push_back(id(c[0], c[1], c[2]));
+      }
+      m.elements.push_back(Simplex::from_range(v.data(), v.data() + v.size()));
+    } while (std::next_permutation(perm.begin(), perm.end()));
+  }
+  const auto fc = face_completion(m);
+  ASSERT_EQ(m.elements.size(), 48u);
+  ASSERT_TRUE(is_conforming(fc));
+  int neighbours = 0;
+  for (std::size_t i = 0; i < fc.elements.size(); ++i)
+    for (std::size_t j = i + 1; j < fc.elements.size(); ++j) {
+      const Simplex &a = fc.elements[i], &b = fc.elements[j];
+      if (a.is_face_of(b) || b.is_face_of(a)) continue;
+      bool share = false;
+      for (VertexId u : a)
+        for (VertexId w : b) share = share || u == w;
+      if (!share) continue;
+      ++neighbours;
+      ASSERT_TRUE((weakly_separated<Exact, 3>(fc.coords(a), fc.coords(b))))
+          << "neighbours " << i << " and " << j << " left to the LP";
+    }
+  EXPECT_GT(neighbours, 1000); // the pairs of the check, not a handful
+}
+
 // Eq. 4.2 up to the rotation (spec/lemmas.md#lemma-4-2-rotational): with two templates instanced
 // by the quarter turns, deciding copy 0 against copies k <= n/2 finds the same overlaps as all
 // pairs — including an overlap that only the pair ((1,0), (2,3)), k = 3 > n/2, shows directly

@@ -194,7 +194,8 @@ bool for_each_candidate_plane(const std::vector<Point<FT, D>>& pts, F&& test) {
   return false;
 }
 
-/// Signs of n·(x - p) over a point set: -1/0/+1 presence flags.
+/// Signs of n·(x - p) over a point set: -1/0/+1 presence flags. Stops once both strict signs
+/// are present: the set then straddles the plane, which no separation test can use.
 template <class FT, int D>
 std::array<bool, 3> side_flags(const std::vector<Point<FT, D>>& x, const Point<FT, D>& p,
                                const Point<FT, D>& n) {
@@ -202,8 +203,31 @@ std::array<bool, 3> side_flags(const std::vector<Point<FT, D>>& x, const Point<F
   for (const auto& q : x) {
     const FT s = dot<FT, D>(n, q - p);
     f[s < 0 ? 0 : (s > 0 ? 2 : 1)] = true;
+    if (f[0] && f[2]) break;
   }
   return f;
+}
+
+inline bool straddles(const std::array<bool, 3>& f) {
+  return f[0] && f[2];
+}
+
+/// The points of a ∪ b for the candidate planes: those a and b share first, each once. Elements
+/// that meet in a common face are separated, if at all, by a plane through that face, so the
+/// candidates through shared points come first; a repeated point adds only zero normals and
+/// planes already listed.
+template <class FT, int D>
+std::vector<Point<FT, D>> candidate_points(const std::vector<Point<FT, D>>& a,
+                                           const std::vector<Point<FT, D>>& b) {
+  const auto in = [](const std::vector<Point<FT, D>>& s, const Point<FT, D>& p) {
+    return std::find(s.begin(), s.end(), p) != s.end();
+  };
+  std::vector<Point<FT, D>> pts, rest;
+  for (const auto& p : a) (in(b, p) ? pts : rest).push_back(p);
+  for (const auto& q : b)
+    if (!in(a, q)) rest.push_back(q);
+  pts.insert(pts.end(), rest.begin(), rest.end());
+  return pts;
 }
 } // namespace detail
 
@@ -316,14 +340,13 @@ bool are_two_triangles_in_plane(const std::vector<Point<FT, D>>& a,
 /// its relative interior in the open half-space).
 template <class FT, int D>
 bool weakly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
-  std::vector<Point<FT, D>> pts = a;
-  pts.insert(pts.end(), b.begin(), b.end());
   return detail::for_each_candidate_plane<FT, D>(
-      pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+      detail::candidate_points<FT, D>(a, b), [&](const Point<FT, D>& p, const Point<FT, D>& n) {
         bool nonzero = false;
         for (int d = 0; d < D; ++d) nonzero = nonzero || n[d] != 0;
         if (!nonzero) return false;
         const auto fa = detail::side_flags<FT, D>(a, p, n);
+        if (detail::straddles(fa)) return false;
         const auto fb = detail::side_flags<FT, D>(b, p, n);
         const bool a_in_plane = !fa[0] && !fa[2], b_in_plane = !fb[0] && !fb[2];
         if (a_in_plane && b_in_plane) return false;
@@ -334,11 +357,10 @@ bool weakly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Poin
 /// A hyperplane puts a and b in opposite half-spaces, one of them open: conv a ∩ conv b = ∅.
 template <class FT, int D>
 bool strictly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
-  std::vector<Point<FT, D>> pts = a;
-  pts.insert(pts.end(), b.begin(), b.end());
   return detail::for_each_candidate_plane<FT, D>(
-      pts, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+      detail::candidate_points<FT, D>(a, b), [&](const Point<FT, D>& p, const Point<FT, D>& n) {
         const auto fa = detail::side_flags<FT, D>(a, p, n);
+        if (detail::straddles(fa)) return false;
         const auto fb = detail::side_flags<FT, D>(b, p, n);
         const bool a_neg = !fa[2], a_pos = !fa[0], b_neg = !fb[2], b_pos = !fb[0];
         return (a_neg && b_pos && (!fa[1] || !fb[1])) || (a_pos && b_neg && (!fa[1] || !fb[1]));
@@ -486,18 +508,43 @@ struct ConformityViolation {
   Simplex a, b;
 };
 
+namespace detail {
+/// The simplex on the vertices of a and b together, when there are at most four.
+inline std::optional<Simplex> simplex_union(const Simplex& a, const Simplex& b) {
+  std::array<VertexId, 8> u{};
+  const auto n = std::set_union(a.begin(), a.end(), b.begin(), b.end(), u.begin()) - u.begin();
+  if (n > 4) return std::nullopt;
+  return Simplex::from_range(u.data(), u.data() + n);
+}
+} // namespace detail
+
 /// Def A.13 for simplices: checks the face completion for pairwise disjoint relative interiors
 /// and for distinct vertex indices with equal coordinates. Returns the first violating pair.
+/// Two distinct faces of one non-degenerate simplex have disjoint relative interiors (a point of
+/// the simplex has unique barycentric coordinates, and a face's relative interior is where they
+/// are positive exactly on its vertices), so a pair whose union is a non-degenerate element of the
+/// face completion is decided without geometry; most pairs of neighbouring elements are such.
 template <class FT, int D>
 std::optional<ConformityViolation> find_nonconformity(const ElementComplex<FT, D>& x) {
   const auto fc = face_completion(x);
   std::vector<Box<FT, D>> boxes;
   for (const auto& e : fc.elements) boxes.push_back(box_of<FT, D>(fc.coords(e)));
+  std::vector<signed char> independent(fc.elements.size(), -1); // -1: not yet decided
+  const auto faces_of_one_simplex = [&](const Simplex& a, const Simplex& b) {
+    const auto u = detail::simplex_union(a, b);
+    if (!u) return false;
+    const auto it = std::lower_bound(fc.elements.begin(), fc.elements.end(), *u);
+    if (it == fc.elements.end() || *it != *u) return false;
+    auto& known = independent[std::size_t(it - fc.elements.begin())];
+    if (known < 0) known = affinely_independent<FT, D>(fc.coords(*u)) ? 1 : 0;
+    return known == 1;
+  };
   std::optional<ConformityViolation> bad;
   for_each_overlapping_pair<FT, D>(boxes, [&](std::size_t i, std::size_t j) {
     const Simplex& a = fc.elements[i];
     const Simplex& b = fc.elements[j];
     if (a.is_face_of(b) || b.is_face_of(a)) return true; // relint(face) ⊆ bnd(b)
+    if (faces_of_one_simplex(a, b)) return true;
     if (relative_interiors_meet<FT, D>(fc.coords(a), fc.coords(b))) {
       bad = ConformityViolation{a, b};
       return false;
