@@ -107,14 +107,16 @@ campaign() {
   # the adaptation harness's (60 -> 130 inputs/s).
   local extra=()
   [ "$h" = generate ] || extra=(-entropic=0)
-  # Workers share the corpus directory: each rereads it (-reload=1, libFuzzer's default) and so
-  # picks up what the others found.
-  local k pids=()
+  # Workers share the corpus directory: each rereads it and so picks up what the others found.
+  # libFuzzer's default rereads it every second, a listing of thousands of files that took 11 % of
+  # a JSON process: once a minute for workers, never for a single process.
+  local k pids=() reload=0
+  [ "${FUZZ_WORKERS:-1}" = 1 ] || reload=60
   set +e
   for ((k = 1; k <= ${FUZZ_WORKERS:-1}; k++)); do
     [ "$k" = 1 ] || log=$work/campaign.w$k.log
     ASAN_OPTIONS=malloc_context_size=0 ./build-fuzz/fuzz/fuzz_"$h" "$work/corpus" \
-      -max_total_time="$secs" -max_len="$max_len" -timeout=60 -rss_limit_mb=4096 -reload=1 \
+      -max_total_time="$secs" -max_len="$max_len" -timeout=60 -rss_limit_mb=4096 -reload=$reload \
       -print_final_stats=1 -artifact_prefix="$work/" "${extra[@]}" \
       > "$log" 2>&1 &
     pids+=($!)
