@@ -346,10 +346,14 @@ std::vector<Point<Exact, D>> random_simplex(std::mt19937& rng) {
 template <int D>
 void separation_filters_agree_with_lp() {
   std::mt19937 rng(20261122);
-  int separated = 0, meeting = 0;
+  int separated = 0, meeting = 0, by_axis = 0;
   for (int k = 0; k < 1500; ++k) {
     const auto a = random_simplex<D>(rng), b = random_simplex<D>(rng);
     const auto lp = common_point<Exact, D>({{a, true}, {b, true}});
+    if (detail::axis_projections_separate<Exact, D>(a, b)) {
+      ++by_axis;
+      ASSERT_FALSE(lp.strict_meet) << "disjoint axis projections claimed for meeting interiors";
+    }
     if (weakly_separated<Exact, D>(a, b)) {
       ++separated;
       ASSERT_FALSE(lp.strict_meet) << "weak separation claimed for meeting relative interiors";
@@ -360,9 +364,27 @@ void separation_filters_agree_with_lp() {
     meeting += lp.strict_meet;
   }
   EXPECT_GT(separated, 100); // the filter does real work
+  EXPECT_GT(by_axis, 100);   // and so do the axis projections
   EXPECT_GT(meeting, 100);   // and the sample has both outcomes
 }
 } // namespace
+
+// A simplex's relative interior projects to the open interval between its extreme coordinates,
+// or to the one coordinate of a flat direction: a flat triangle through a tetrahedron's interior
+// is not told apart (its z-projection is the point 1, inside (0, 3)), while two tetrahedra on
+// either side of the plane x = 1 are.
+TEST(Predicates, AxisProjectionsOfRelativeInteriors) {
+  const std::vector<P3> tet{p3(0, 0, 0), p3(3, 0, 0), p3(0, 3, 0), p3(0, 0, 3)};
+  const std::vector<P3> flat{p3(-1, -1, 1), p3(2, 0, 1), p3(0, 2, 1)};
+  EXPECT_FALSE((detail::axis_projections_separate<Exact, 3>(tet, flat)));
+  EXPECT_TRUE((relative_interiors_meet<Exact, 3>(tet, flat)));
+  const std::vector<P3> left{p3(0, 0, 0), p3(1, 0, 0), p3(1, 1, 0), p3(1, 1, 1)};
+  const std::vector<P3> right{p3(1, 0, 0), p3(2, 0, 0), p3(1, 1, 0), p3(1, 1, 1)};
+  EXPECT_TRUE((detail::axis_projections_separate<Exact, 3>(left, right)));
+  EXPECT_FALSE((relative_interiors_meet<Exact, 3>(left, right)));
+  // A point on the boundary of the other's box is outside its relative interior's projection.
+  EXPECT_TRUE((detail::axis_projections_separate<Exact, 3>({p3(1, 1, 1)}, left)));
+}
 
 TEST(Predicates, SeparationFiltersNeverContradictTheExactLP2D) {
   separation_filters_agree_with_lp<2>();
@@ -371,18 +393,65 @@ TEST(Predicates, SeparationFiltersNeverContradictTheExactLP3D) {
   separation_filters_agree_with_lp<3>();
 }
 
+namespace {
+/// The interval filter of the candidate planes (spec/number-type.md, "Candidate planes discarded
+/// on intervals") may only discard a plane that the exact side signs reject in both
+/// orientations. Coordinates in thirds, so that the enclosures are proper intervals and points on
+/// a plane give signs the intervals cannot decide.
+template <int D>
+void interval_filter_discards_only_rejected_planes() {
+  std::mt19937 rng(20261127);
+  int discarded = 0, kept_certifying = 0;
+  for (int k = 0; k < 400; ++k) {
+    auto a = random_simplex<D>(rng), b = random_simplex<D>(rng);
+    for (auto* s : {&a, &b})
+      for (auto& p : *s)
+        for (int d = 0; d < D; ++d) p[d] = p[d] / 3;
+    const auto pts = detail::candidate_points<Exact, D>(a, b);
+    const auto ipts = detail::enclosures<Exact, D>(pts);
+    const auto ia = detail::enclosures<Exact, D>(a), ib = detail::enclosures<Exact, D>(b);
+    detail::for_each_candidate<D>(pts.size(), [&](const detail::CandidatePlane& c) {
+      const auto n = detail::candidate_normal<Exact, D>(pts, c);
+      const auto fa = detail::side_flags<Exact, D>(a, pts[c.i], n);
+      const auto fb = detail::side_flags<Exact, D>(b, pts[c.i], n);
+      const bool certifies = (!fa[2] && !fb[0]) || (!fa[0] && !fb[2]);
+      const auto in = detail::candidate_normal<detail::Enclosure, D>(ipts, c);
+      if (detail::certainly_not_separating<D>(ia, ib, ipts[c.i], in)) {
+        ++discarded;
+        EXPECT_FALSE(certifies) << "the filter discarded a plane with a and b on opposite sides";
+      } else {
+        kept_certifying += certifies;
+      }
+      return false;
+    });
+  }
+  EXPECT_GT(discarded, 1000);     // the filter does real work
+  EXPECT_GT(kept_certifying, 50); // and the planes that certify are kept
+}
+} // namespace
+
+TEST(Predicates, IntervalFilterDiscardsOnlyPlanesTheExactTestRejects2D) {
+  interval_filter_discards_only_rejected_planes<2>();
+}
+TEST(Predicates, IntervalFilterDiscardsOnlyPlanesTheExactTestRejects3D) {
+  interval_filter_discards_only_rejected_planes<3>();
+}
+
 // The conformity check of a mesh (find_nonconformity) meets mostly neighbours: elements that share
 // vertices but are not faces of one another. For those the candidate planes must certify the
 // separation on their own — through the shared points, which weakly_separated tries first — so
 // that the exact LP is left to the rare pairs the candidates miss. Checked on the Kuhn
 // tetrahedralization of a 2x2x2 grid of unit cubes (6 tetrahedra per cube along the diagonal),
 // every pair of its face completion that shares a vertex.
-TEST(Predicates, SeparationCertifiesEveryNeighbourPairOfAConformingMesh) {
+// Also with spacing 1/3, whose coordinates have proper enclosures: the interval filter must
+// keep the planes through the shared points.
+static void separation_certifies_every_neighbour_pair(const Exact& spacing) {
   ElementComplex<Exact, 3> m;
   const auto id = [](int x, int y, int z) { return VertexId(x + 3 * y + 9 * z); };
   for (int z = 0; z < 3; ++z)
     for (int y = 0; y < 3; ++y)
-      for (int x = 0; x < 3; ++x) m.points.push_back(p3(x, y, z));
+      for (int x = 0; x < 3; ++x)
+        m.points.push_back(P3{{Exact(x) * spacing, Exact(y) * spacing, Exact(z) * spacing}});
   std::array<int, 3> perm{0, 1, 2};
   for (int cube = 0; cube < 8; ++cube) {
     std::sort(perm.begin(), perm.end());
@@ -413,6 +482,11 @@ TEST(Predicates, SeparationCertifiesEveryNeighbourPairOfAConformingMesh) {
           << "neighbours " << i << " and " << j << " left to the LP";
     }
   EXPECT_GT(neighbours, 1000); // the pairs of the check, not a handful
+}
+
+TEST(Predicates, SeparationCertifiesEveryNeighbourPairOfAConformingMesh) {
+  separation_certifies_every_neighbour_pair(Exact(1));
+  separation_certifies_every_neighbour_pair(Exact(1) / 3);
 }
 
 // Eq. 4.2 up to the rotation (spec/lemmas.md#lemma-4-2-rotational): with two templates instanced

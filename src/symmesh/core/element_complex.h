@@ -14,6 +14,8 @@
 #include "symmesh/core/point.h"
 #include "symmesh/core/simplex.h"
 
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -163,35 +165,117 @@ bool point_in_simplex(const std::vector<Point<FT, D>>& b, const Point<FT, D>& x)
 }
 
 namespace detail {
-/// Normals of candidate separating hyperplanes through point p_i of a ∪ b: spanned by other
-/// points, or containing an edge and a coordinate direction, or orthogonal to an edge. Cheap
-/// exact certificates; the LP decides whatever they do not certify.
-template <class FT, int D, class F>
-bool for_each_candidate_plane(const std::vector<Point<FT, D>>& pts, F&& test) {
-  const std::size_t n = pts.size();
+/// The points of a ∪ b for the candidate planes: those a and b share first, each once. Elements
+/// that meet in a common face are separated, if at all, by a plane through that face, so the
+/// candidates through shared points come first; a repeated point adds only zero normals and
+/// planes already listed.
+template <class FT, int D>
+std::vector<Point<FT, D>> candidate_points(const std::vector<Point<FT, D>>& a,
+                                           const std::vector<Point<FT, D>>& b) {
+  const auto in = [](const std::vector<Point<FT, D>>& s, const Point<FT, D>& p) {
+    return std::find(s.begin(), s.end(), p) != s.end();
+  };
+  std::vector<Point<FT, D>> pts, rest;
+  for (const auto& p : a) (in(b, p) ? pts : rest).push_back(p);
+  for (const auto& q : b)
+    if (!in(a, q)) rest.push_back(q);
+  pts.insert(pts.end(), rest.begin(), rest.end());
+  return pts;
+}
+
+/// Interval arithmetic that sets the rounding mode itself, so that every value it computes is a
+/// certified enclosure. It only discards candidate separating planes; every decision that
+/// certifies something is exact (spec/number-type.md, "Candidate planes discarded on intervals").
+using Enclosure = CGAL::Interval_nt<true>;
+
+template <class FT, int D>
+std::vector<Point<Enclosure, D>> enclosures(const std::vector<Point<FT, D>>& x) {
+  std::vector<Point<Enclosure, D>> out(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (int d = 0; d < D; ++d) out[i][d] = Enclosure(CGAL::to_interval(x[i][d]));
+  return out;
+}
+
+/// A candidate separating hyperplane through point i of a ∪ b. Kind 0 is orthogonal to the edge
+/// (i, j); in the plane kind 1 contains that edge; in space kinds 1..3 contain the edge and the
+/// coordinate direction e_{kind-1}, and kind 4 is spanned by points i, j and l.
+struct CandidatePlane {
+  std::size_t i, j, l;
+  int kind;
+};
+
+/// The normal of a candidate plane, in any number type (exact, or enclosures for the filter).
+template <class NT, int D>
+Point<NT, D> candidate_normal(const std::vector<Point<NT, D>>& pts, const CandidatePlane& c) {
+  const Point<NT, D> u = pts[c.j] - pts[c.i];
+  if (c.kind == 0) return u;
+  if constexpr (D == 2) {
+    return Point<NT, 2>{{-u[1], u[0]}};
+  } else {
+    if (c.kind <= 3) {
+      Point<NT, 3> nk{{NT(0), NT(0), NT(0)}};
+      const int k = c.kind - 1, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      nk[k1] = u[k2];
+      nk[k2] = -u[k1];
+      return nk;
+    }
+    const Point<NT, 3> w = pts[c.l] - pts[c.i];
+    return Point<NT, 3>{
+        {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}};
+  }
+}
+
+/// Calls f on every candidate plane of n points, in order, until f returns true.
+template <int D, class F>
+bool for_each_candidate(std::size_t n, F&& f) {
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
-      const Point<FT, D> u = pts[j] - pts[i];
-      if (test(pts[i], u)) return true; // hyperplane through p_i orthogonal to the edge
-      if constexpr (D == 2) {
-        if (test(pts[i], Point<FT, 2>{{-u[1], u[0]}})) return true;
-      } else {
-        for (int k = 0; k < 3; ++k) { // contains the edge and coordinate direction e_k
-          Point<FT, 3> nk{{FT(0), FT(0), FT(0)}};
-          const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-          nk[k1] = u[k2];
-          nk[k2] = -u[k1];
-          if (test(pts[i], nk)) return true;
-        }
-        for (std::size_t l = j + 1; l < n; ++l) {
-          const Point<FT, 3> w = pts[l] - pts[i];
-          const Point<FT, 3> nn{
-              {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}};
-          if (test(pts[i], nn)) return true;
-        }
-      }
+      if (f(CandidatePlane{i, j, j, 0})) return true;
+      for (int kind = 1; kind < (D == 2 ? 2 : 4); ++kind)
+        if (f(CandidatePlane{i, j, j, kind})) return true;
+      if constexpr (D == 3)
+        for (std::size_t l = j + 1; l < n; ++l)
+          if (f(CandidatePlane{i, j, l, 4})) return true;
     }
   return false;
+}
+
+/// Whether the enclosures prove that the plane through p with normal n has a and b on opposite
+/// closed sides in neither orientation: for each orientation some point of a or of b is
+/// certainly strictly on its wrong side. Such a plane certifies no separation, weak or strict.
+template <int D>
+bool certainly_not_separating(const std::vector<Point<Enclosure, D>>& a,
+                              const std::vector<Point<Enclosure, D>>& b,
+                              const Point<Enclosure, D>& p, const Point<Enclosure, D>& n) {
+  bool a_below_fails = false, a_above_fails = false; // a ≤ 0 ≤ b, a ≥ 0 ≥ b
+  const auto note = [&](const Point<Enclosure, D>& q, bool in_a) {
+    const Enclosure s = dot<Enclosure, D>(n, q - p);
+    const bool negative = CGAL::certainly(s < 0), positive = CGAL::certainly(s > 0);
+    if (in_a ? positive : negative) a_below_fails = true;
+    if (in_a ? negative : positive) a_above_fails = true;
+    return a_below_fails && a_above_fails;
+  };
+  for (const auto& q : a)
+    if (note(q, true)) return true;
+  for (const auto& q : b)
+    if (note(q, false)) return true;
+  return false;
+}
+
+/// Normals of candidate separating hyperplanes through point p_i of a ∪ b (candidate_points):
+/// spanned by other points, or containing an edge and a coordinate direction, or orthogonal to
+/// an edge. Cheap exact certificates; the LP decides whatever they do not certify. A plane the
+/// enclosures already rule out is not formed exactly.
+template <class FT, int D, class F>
+bool for_each_candidate_plane(const std::vector<Point<FT, D>>& a,
+                              const std::vector<Point<FT, D>>& b, F&& test) {
+  const auto pts = candidate_points<FT, D>(a, b);
+  const auto ipts = enclosures<FT, D>(pts), ia = enclosures<FT, D>(a), ib = enclosures<FT, D>(b);
+  return for_each_candidate<D>(pts.size(), [&](const CandidatePlane& c) {
+    if (certainly_not_separating<D>(ia, ib, ipts[c.i], candidate_normal<Enclosure, D>(ipts, c)))
+      return false;
+    return bool(test(pts[c.i], candidate_normal<FT, D>(pts, c)));
+  });
 }
 
 /// Signs of n·(x - p) over a point set: -1/0/+1 presence flags. Stops once both strict signs
@@ -212,23 +296,6 @@ inline bool straddles(const std::array<bool, 3>& f) {
   return f[0] && f[2];
 }
 
-/// The points of a ∪ b for the candidate planes: those a and b share first, each once. Elements
-/// that meet in a common face are separated, if at all, by a plane through that face, so the
-/// candidates through shared points come first; a repeated point adds only zero normals and
-/// planes already listed.
-template <class FT, int D>
-std::vector<Point<FT, D>> candidate_points(const std::vector<Point<FT, D>>& a,
-                                           const std::vector<Point<FT, D>>& b) {
-  const auto in = [](const std::vector<Point<FT, D>>& s, const Point<FT, D>& p) {
-    return std::find(s.begin(), s.end(), p) != s.end();
-  };
-  std::vector<Point<FT, D>> pts, rest;
-  for (const auto& p : a) (in(b, p) ? pts : rest).push_back(p);
-  for (const auto& q : b)
-    if (!in(a, q)) rest.push_back(q);
-  pts.insert(pts.end(), rest.begin(), rest.end());
-  return pts;
-}
 } // namespace detail
 
 namespace detail {
@@ -341,7 +408,7 @@ bool are_two_triangles_in_plane(const std::vector<Point<FT, D>>& a,
 template <class FT, int D>
 bool weakly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
   return detail::for_each_candidate_plane<FT, D>(
-      detail::candidate_points<FT, D>(a, b), [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+      a, b, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
         bool nonzero = false;
         for (int d = 0; d < D; ++d) nonzero = nonzero || n[d] != 0;
         if (!nonzero) return false;
@@ -358,7 +425,7 @@ bool weakly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Poin
 template <class FT, int D>
 bool strictly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Point<FT, D>>& b) {
   return detail::for_each_candidate_plane<FT, D>(
-      detail::candidate_points<FT, D>(a, b), [&](const Point<FT, D>& p, const Point<FT, D>& n) {
+      a, b, [&](const Point<FT, D>& p, const Point<FT, D>& n) {
         const auto fa = detail::side_flags<FT, D>(a, p, n);
         if (detail::straddles(fa)) return false;
         const auto fb = detail::side_flags<FT, D>(b, p, n);
@@ -367,11 +434,46 @@ bool strictly_separated(const std::vector<Point<FT, D>>& a, const std::vector<Po
       });
 }
 
+namespace detail {
+/// The extreme values of coordinate d over a point set.
+template <class FT, int D>
+std::pair<FT, FT> coordinate_range(const std::vector<Point<FT, D>>& x, int d) {
+  FT lo = x[0][d], hi = x[0][d];
+  for (const auto& q : x) {
+    if (q[d] < lo) lo = q[d];
+    if (hi < q[d]) hi = q[d];
+  }
+  return {lo, hi};
+}
+
+/// Some coordinate axis on which the projections of relint(conv a) and relint(conv b) are
+/// disjoint. A simplex's relative interior projects to the open interval between its extreme
+/// coordinates (every vertex has a positive weight), or to their common value when they are
+/// equal. Comparisons only: elements of a mesh that touch across an axis-parallel plane, as
+/// neighbours on a grid do, are told apart without forming a separating plane.
+template <class FT, int D>
+bool axis_projections_separate(const std::vector<Point<FT, D>>& a,
+                               const std::vector<Point<FT, D>>& b) {
+  for (int d = 0; d < D; ++d) {
+    const auto [alo, ahi] = coordinate_range<FT, D>(a, d);
+    const auto [blo, bhi] = coordinate_range<FT, D>(b, d);
+    const bool a_flat = !(alo < ahi), b_flat = !(blo < bhi);
+    if (a_flat && b_flat ? alo != blo
+        : a_flat         ? !(blo < alo && alo < bhi)
+        : b_flat         ? !(alo < blo && blo < ahi)
+                         : !(alo < bhi && blo < ahi))
+      return true;
+  }
+  return false;
+}
+} // namespace detail
+
 /// relint(conv a) ∩ relint(conv b) ≠ ∅, decided exactly.
 template <class FT, int D>
 bool relative_interiors_meet(const std::vector<Point<FT, D>>& a,
                              const std::vector<Point<FT, D>>& b) {
   if (a.size() == 1 && b.size() == 1) return a[0] == b[0];
+  if (detail::axis_projections_separate<FT, D>(a, b)) return false;
   if constexpr (D == 2) {
     // The common case of overlap and conformity tests: 6 edge lines instead of all candidates.
     if (detail::are_two_triangles_in_plane<FT, D>(a, b))
