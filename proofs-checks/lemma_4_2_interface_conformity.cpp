@@ -157,6 +157,58 @@ void boundary_reduction_without_eq_4_2(const GeneratedStructure<D>& s) {
                        picture(s));
 }
 
+/// spec/lemmas.md#lemma-4-2-condition-ii: the interface part of a pair in both directions, by
+/// membership (what the checker computes) and by exact containment (the definition).
+template <int D>
+struct InterfaceParts {
+  std::vector<core::Simplex> members, contained;
+};
+
+template <int D>
+std::vector<InterfaceParts<D>> interface_parts(const GeneratedStructure<D>& s,
+                                               const core::StructureInstance<Exact, D>& si,
+                                               std::size_t a, std::size_t b) {
+  const auto view = [&](std::size_t k) {
+    return core::instance_view(si, k, core::mesh_boundary(s.x.templates[si.ids[k].i].mesh));
+  };
+  const auto va = view(a), vb = view(b);
+  return {{core::detail::interface_part_of_members(va, vb),
+           core::transformed_interface_part(s.x, si, a, b)},
+          {core::detail::interface_part_of_members(vb, va),
+           core::transformed_interface_part(s.x, si, b, a)}};
+}
+
+/// Where condition (i) holds for a neighbouring pair, the transformed boundary elements that are
+/// elements of the other instance are exactly those contained in it (both directions).
+template <int D>
+void interface_part_members_equal_containment(const GeneratedStructure<D>& s) {
+  const auto si = core::apply_template(s.x);
+  const auto failures_i = core::condition_i_failures(si);
+  std::size_t compared = 0;
+  for (auto [a, b] : core::neighbouring_instances(si)) {
+    if (failures_i.count({a, b})) continue;
+    for (const auto& part : interface_parts<D>(s, si, a, b)) {
+      SYMMESH_PROOF_ASSERT(part.members == part.contained, record(s), picture(s));
+      compared += part.contained.size();
+    }
+  }
+  RC_TAG(compared > 0 ? "interface parts compared" : "all interface parts empty");
+}
+
+/// (i) dropped (Figure 4.4): on a pair where (i) fails, some transformed boundary element lies in
+/// the other instance without being one of its elements, so membership is not containment.
+template <int D>
+void interface_part_without_condition_i(const GeneratedStructure<D>& s) {
+  const auto si = core::apply_template(s.x);
+  const auto failures_i = core::condition_i_failures(si);
+  SYMMESH_PROOF_ASSERT(!failures_i.empty(), record(s), picture(s));
+  bool differs = false;
+  for (const auto& [pair, why] : failures_i)
+    for (const auto& part : interface_parts<D>(s, si, pair.first, pair.second))
+      differs = differs || part.members != part.contained;
+  SYMMESH_PROOF_ASSERT(differs, record(s), picture(s));
+}
+
 template <int D>
 void add(std::vector<Property>& p) {
   const std::string d = dim_suffix(D);
@@ -198,6 +250,33 @@ void add(std::vector<Property>& p) {
        "Lemma 4.2 without (i) (Figure 4.4): a translated template whose interface side is "
        "subdivided differently; the checker reports condition (i) and AT is not conforming",
        [] { return rc::detail::toProperty([] { figure_4_4<D>(*figure_4_4_structure<D>()); }); },
+       {}});
+  p.push_back(
+      {kLemma,
+       "interface_part_members_equal_containment" + d,
+       D,
+       Kind::holds,
+       "Lemma 4.2 (ii) as the checker computes it (spec/lemmas.md#lemma-4-2-condition-ii): "
+       "on every neighbouring pair where (i) holds, the transformed boundary elements that are "
+       "elements of the other instance are exactly those contained in it (exact containment), "
+       "in both directions",
+       [] {
+         return rc::detail::toProperty(
+             [] { interface_part_members_equal_containment<D>(*templated_structure<D>()); });
+       },
+       {}});
+  p.push_back(
+      {kLemma,
+       "interface_part_needs_condition_i" + d,
+       D,
+       Kind::counterexample,
+       "Without (i) (Figure 4.4) membership is not containment: on a pair where (i) fails some "
+       "transformed boundary element lies in the other instance without being one of its "
+       "elements",
+       [] {
+         return rc::detail::toProperty(
+             [] { interface_part_without_condition_i<D>(*figure_4_4_structure<D>()); });
+       },
        {}});
   p.push_back(
       {kLemma, "boundary_reduction_agrees" + d, D, Kind::holds,

@@ -6,8 +6,10 @@
 ///       this fails exactly when some element of inst_a and a different element of inst_b have
 ///       meeting relative interiors (spec/lemmas.md#lemma-4-2-condition-i);
 ///  (ii) T_a(IP_{a,b}) = T_b(IP_{b,a}), IP_{a,b} = bnd(X_i) restricted to T_a^{-1}(interf_geo):
-///       the transformed template boundary elements contained in us(inst_b), found with the
-///       exact containment test simplex_covered_by (boundary elements have dimension <= 2).
+///       the transformed template boundary elements contained in us(inst_b). It is evaluated
+///       only where (i) holds, and there these are the ones that are elements of inst_b
+///       (spec/lemmas.md#lemma-4-2-condition-ii); transformed_interface_part keeps the
+///       definition (exact containment) as the reference for the properties.
 /// Pairs (a, a) are trivial. When all pairs pass, AT(Γ) is conforming (the lemma); the
 /// converse also holds, so the verdict must equal the direct check.
 #pragma once
@@ -33,51 +35,24 @@ struct Lemma42Verdict {
   std::string detail;
 };
 
-/// What the checker needs of one instance, computed once rather than per pair: its elements in
-/// global ids with their coordinates and boxes, its complex over its own points, and T_a applied
-/// to the boundary elements of its template (also in global ids).
-template <class FT, int D>
+/// What condition (ii) needs of one instance, computed once rather than per pair: its elements
+/// and T_a applied to the boundary elements of its template, both in global ids and sorted.
 struct InstanceView {
-  std::vector<Simplex> elements; ///< global ids (si.instance_elements)
-  std::vector<std::vector<Point<FT, D>>> coords;
-  std::vector<Box<FT, D>> boxes;
-  std::vector<std::size_t> order_by_x;    ///< element indices by increasing box lo[0]
-  ElementComplex<FT, D> local;            ///< the instance over its own points only
-  std::vector<Box<FT, D>> local_boxes;    ///< per element of `local`
-  std::vector<Simplex> boundary_elements; ///< T_a(bnd(X_i)) in global ids
+  std::vector<Simplex> elements;          ///< si.instance_elements[a]
+  std::vector<Simplex> boundary_elements; ///< T_a(bnd(X_i))
 };
 
 template <class FT, int D>
-InstanceView<FT, D> instance_view(const StructureInstance<FT, D>& si, std::size_t a,
-                                  const ElementComplex<FT, D>& template_boundary) {
-  InstanceView<FT, D> v;
-  const auto& m = si.at.mesh;
+InstanceView instance_view(const StructureInstance<FT, D>& si, std::size_t a,
+                           const ElementComplex<FT, D>& template_boundary) {
+  InstanceView v;
   v.elements = si.instance_elements[a];
-  for (const auto& s : v.elements) {
-    v.coords.push_back(m.coords(s));
-    v.boxes.push_back(box_of<FT, D>(v.coords.back()));
-  }
-  v.order_by_x.resize(v.boxes.size());
-  for (std::size_t k = 0; k < v.boxes.size(); ++k) v.order_by_x[k] = k;
-  std::stable_sort(v.order_by_x.begin(), v.order_by_x.end(), [&](std::size_t p, std::size_t q) {
-    return v.boxes[p].lo[0] < v.boxes[q].lo[0];
-  });
-  std::map<VertexId, VertexId> local_id;
-  for (VertexId g : si.vertex_map[a])
-    if (local_id.emplace(g, VertexId(v.local.points.size())).second)
-      v.local.points.push_back(m.points[g]);
-  for (const auto& s : v.elements) {
-    std::array<VertexId, 4> l{};
-    for (int k = 0; k < s.n; ++k) l[k] = local_id.at(s.v[k]);
-    v.local.elements.push_back(Simplex::from_range(l.data(), l.data() + s.n));
-  }
-  v.local.normalize();
-  for (const auto& e : v.local.elements) v.local_boxes.push_back(box_of<FT, D>(v.local.coords(e)));
   for (const auto& e : template_boundary.elements) {
     std::array<VertexId, 4> g{};
     for (int k = 0; k < e.n; ++k) g[k] = si.vertex_map[a][e.v[k]];
     v.boundary_elements.push_back(Simplex::from_range(g.data(), g.data() + e.n));
   }
+  std::sort(v.boundary_elements.begin(), v.boundary_elements.end());
   return v;
 }
 
@@ -172,41 +147,49 @@ condition_i_failures(const StructureInstance<FT, D>& si) {
   return failed;
 }
 
-/// T_a(IP_{a,b}) in global element ids: the transformed template boundary elements of a that lie
-/// in us(inst_b). Only the elements of b inside a's box can contain them.
-template <class FT, int D>
-std::vector<Simplex>
-transformed_interface_part(const StructureInstance<FT, D>& si, const InstanceView<FT, D>& va,
-                           const InstanceView<FT, D>& vb, std::size_t a, std::size_t b) {
+namespace detail {
+/// T_a(IP_{a,b}) in global element ids where condition (i) holds for (a, b): the transformed
+/// template boundary elements of a that are elements of inst_b. Under (i) these are exactly the
+/// ones contained in us(inst_b) (spec/lemmas.md#lemma-4-2-condition-ii), so (ii) costs a set
+/// intersection instead of exact containment tests.
+/// \pre condition (i) holds for (a, b): check_interface_conformity, the only caller, evaluates
+/// (ii) only on such pairs
+inline std::vector<Simplex> interface_part_of_members(const InstanceView& va,
+                                                      const InstanceView& vb) {
   std::vector<Simplex> out;
-  if (va.boundary_elements.empty()) return out;
-  ElementComplex<FT, D> near;
-  for (std::size_t k = 0; k < vb.local.elements.size(); ++k)
-    if (vb.local_boxes[k].overlaps(si.instance_box[a]))
-      near.elements.push_back(vb.local.elements[k]);
-  if (near.elements.empty()) return out;
-  near.points = vb.local.points;
-  for (const auto& s : va.boundary_elements) {
-    const auto sp = si.at.mesh.coords(s);
-    if (!box_of<FT, D>(sp).overlaps(si.instance_box[b])) continue;
-    if (simplex_covered_by<FT, D>(sp, near)) out.push_back(s);
-  }
-  std::sort(out.begin(), out.end());
+  std::set_intersection(va.boundary_elements.begin(), va.boundary_elements.end(),
+                        vb.elements.begin(), vb.elements.end(), std::back_inserter(out));
   return out;
 }
 
-/// Condition (ii): T_a(IP_{a,b}) = T_b(IP_{b,a}).
-template <class FT, int D>
-bool condition_ii_holds(const StructureInstance<FT, D>& si, const InstanceView<FT, D>& va,
-                        const InstanceView<FT, D>& vb, std::size_t a, std::size_t b,
-                        std::string* detail) {
-  const auto ip_a = transformed_interface_part(si, va, vb, a, b);
-  const auto ip_b = transformed_interface_part(si, vb, va, b, a);
+/// Condition (ii): T_a(IP_{a,b}) = T_b(IP_{b,a}). \pre condition (i) holds for (a, b)
+inline bool condition_ii_holds(const InstanceView& va, const InstanceView& vb,
+                               std::string* detail) {
+  const auto ip_a = interface_part_of_members(va, vb);
+  const auto ip_b = interface_part_of_members(vb, va);
   if (ip_a == ip_b) return true;
   if (detail)
     *detail = "the interface boundary elements differ: " + std::to_string(ip_a.size()) +
               " from one template, " + std::to_string(ip_b.size()) + " from the other";
   return false;
+}
+} // namespace detail
+
+/// T_a(IP_{a,b}) in global element ids by its definition: the transformed template boundary
+/// elements of a contained in us(inst_b), decided by exact containment (simplex_covered_by;
+/// boundary elements have dimension <= 2). The checker does not use it: it is the reference the
+/// Lemma 4.2 properties compare detail::interface_part_of_members with.
+/// \pre x is a templated structure with mesh templates and si = apply_template(x)
+template <class FT, int D>
+std::vector<Simplex> transformed_interface_part(const TemplatedStructure<FT, D>& x,
+                                                const StructureInstance<FT, D>& si, std::size_t a,
+                                                std::size_t b) {
+  const auto inst_b = si.instance_complex(b);
+  std::vector<Simplex> out;
+  const auto va = instance_view(si, a, mesh_boundary(x.templates[si.ids[a].i].mesh));
+  for (const auto& s : va.boundary_elements)
+    if (simplex_covered_by<FT, D>(si.at.mesh.coords(s), inst_b)) out.push_back(s);
+  return out;
 }
 
 /// \pre x is a templated structure (Eq. 4.2) with mesh templates
@@ -215,8 +198,8 @@ Lemma42Verdict check_interface_conformity(const TemplatedStructure<FT, D>& x,
                                           const StructureInstance<FT, D>& si) {
   Lemma42Verdict v;
   std::vector<std::optional<ElementComplex<FT, D>>> boundary(x.templates.size());
-  std::vector<std::optional<InstanceView<FT, D>>> views(si.ids.size());
-  const auto view = [&](std::size_t a) -> const InstanceView<FT, D>& {
+  std::vector<std::optional<InstanceView>> views(si.ids.size());
+  const auto view = [&](std::size_t a) -> const InstanceView& {
     if (!views[a]) {
       const std::size_t i = si.ids[a].i;
       if (!boundary[i]) boundary[i] = mesh_boundary(x.templates[i].mesh);
@@ -237,7 +220,7 @@ Lemma42Verdict check_interface_conformity(const TemplatedStructure<FT, D>& x,
       failed = 1;
       detail = it->second;
     } else if ((!boundary[i]->elements.empty() || !boundary[j]->elements.empty()) &&
-               !condition_ii_holds(si, view(a), view(b), a, b, &detail)) {
+               !detail::condition_ii_holds(view(a), view(b), &detail)) {
       failed = 2;
     }
     if (failed && v.holds) {

@@ -112,11 +112,16 @@ struct StructureReport {
 /// performance fixture needs about 4000; `symmesh bpp --max-compositions` goes further.
 inline constexpr std::size_t kCheckMaxCompositions = 10000;
 
+namespace detail {
 /// Fills the regularity verdict and the patch counts of `r` from Algorithm 4.1.
+/// \pre x.is_well_formed(), which `analyse`, its only caller, has just decided: the partition
+/// does not decide it again (for a PLC template that would be a second exact conformity check of
+/// its carrier, about half of the analysis of a small PLC structure).
 template <class FT, int D>
 void summarise_boundary_patches(const TemplatedStructure<FT, D>& x, StructureReport& r) {
   BppOptions options;
   options.max_compositions = kCheckMaxCompositions;
+  options.well_formed_checked = true;
   try {
     const auto bpp = boundary_patch_partition(x, options);
     r.bpp_computed = true;
@@ -132,6 +137,7 @@ void summarise_boundary_patches(const TemplatedStructure<FT, D>& x, StructureRep
     r.bpp_error = e.what();
   }
 }
+} // namespace detail
 
 template <class FT, int D>
 StructureReport analyse(const TemplatedStructure<FT, D>& x) {
@@ -159,7 +165,7 @@ StructureReport analyse(const TemplatedStructure<FT, D>& x) {
   const auto g = instance_graph(x, si);
   for (auto [e, end] = boost::edges(g); e != end; ++e)
     r.graph_edges.push_back({boost::source(*e, g), boost::target(*e, g), g[*e]});
-  summarise_boundary_patches(x, r);
+  detail::summarise_boundary_patches(x, r);
   if (r.mesh_templates) {
     r.at_conforming = structure_instance_conforming(si);
     r.lemma42 = check_interface_conformity(x, si);
