@@ -36,6 +36,7 @@ void register_cyclotomic_field(std::vector<Property>&);
 void register_lemma_4_1_cyclotomic(std::vector<Property>&);
 void register_lemma_4_2_cyclotomic(std::vector<Property>&);
 void register_section_5_2_1(std::vector<Property>&);
+void register_section_5_2_1_tmesh(std::vector<Property>&);
 void register_section_5_2_2(std::vector<Property>&);
 void register_section_5_2_3(std::vector<Property>&);
 void register_section_5_2_4(std::vector<Property>&);
@@ -71,6 +72,7 @@ const std::vector<Property>& all_properties() {
                          register_lemma_4_1_cyclotomic,
                          register_lemma_4_2_cyclotomic,
                          register_section_5_2_1,
+                         register_section_5_2_1_tmesh,
                          register_section_5_2_2,
                          register_section_5_2_3,
                          register_section_5_2_4,

@@ -73,6 +73,7 @@ n, h, R, r = 8, 2.0, 1.0, 0.2
 area = lambda q: n / 2 * q * q * math.sin(2 * math.pi / n)
 perimeter = lambda q: 2 * n * q * math.sin(math.pi / n)
 print(h * (area(R) - area(r)), 2 * (area(R) - area(r)) + h * (perimeter(R) + perimeter(r)))")
+tsv8_measure="$v $a"
 if "$BIN" adapt "$TMP/tsv8.tmesh" --refine-where "z > 1 and size > 0.2" --smooth 2 --improve \
     -o "$TMP/tsv8.a.tmesh" --vtu "$TMP/tsv8.a.vtu" --report "$TMP/tsv8.a.json" --quiet; then
   if msg=$($PY tests/cli/structure_instance_checks.py "$TMP/tsv8.a.vtu" "$TMP/tsv8.a.json" "$v" "$a" 2>&1); then
@@ -170,6 +171,75 @@ expect_exit 1 "Technique 5.8 in 3D beyond --max-rounds" -- \
   "$BIN" adapt "$TMP/finfet.tmesh" --delaunay --max-rounds 0 -o "$TMP/finfet.0.tmesh"
 grep -q "after 0 rounds (--max-rounds), template" "$TMP/stderr" && [ ! -e "$TMP/finfet.0.tmesh" ] \
   && pass "the 3D cap names the edge and writes nothing" || fail "3D cap message: $(tail -1 "$TMP/stderr")"
+
+# Section 5.2.1 on .tmesh (spec/adaptation.md#tmesh-cloning): --clone gives one instance its own
+# template and leaves AT unchanged (the same cells, by coordinates), so that --refine-where can
+# pick that instance alone: fewer cells are added than when every instance of the template is
+# refined. --merge-identical merges the clone back with AT unchanged, and not a changed clone.
+"$BIN" example ngon-slice-8 -o "$TMP/n8.json"
+"$BIN" generate "$TMP/n8.json" --size 0.1 --templated "$TMP/n8.tmesh" --quiet
+n8_area=$($PY tests/cli/geometry_area.py "$TMP/n8.json")
+for name in n8 tsv8; do
+  if [ $name = n8 ]; then measure="$n8_area"; else measure="$tsv8_measure"; fi
+  "$BIN" adapt "$TMP/$name.tmesh" --merge-identical -o "$TMP/$name.0.tmesh" --vtu "$TMP/$name.0.vtu" \
+    --report "$TMP/$name.0.json" --quiet || fail "$name: --merge-identical alone"
+  if "$BIN" adapt "$TMP/$name.tmesh" --clone 3 -o "$TMP/$name.c.tmesh" --vtu "$TMP/$name.c.vtu" \
+      --report "$TMP/$name.c.json" 2> "$TMP/stderr" \
+    && "$BIN" adapt "$TMP/$name.c.tmesh" --merge-identical -o "$TMP/$name.m.tmesh" \
+      --vtu "$TMP/$name.m.vtu" --report "$TMP/$name.m.json" --quiet \
+    && msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.c.vtu" "$TMP/$name.c.json" $measure 2>&1) \
+    && $PY - "$TMP/$name" <<'PYEOF'
+import json, sys
+import meshio
+base = sys.argv[1]
+tm = {k: json.load(open(f"{base}.{k}.tmesh")) for k in "0cm"}
+rep = {k: json.load(open(f"{base}.{k}.json")) for k in "0cm"}
+nt, ni = len(tm["0"]["templates"]), sum(len(t["instances"]) for t in tm["0"]["templates"])
+assert rep["0"]["steps"][0]["merge_identical"] == 0, rep["0"]["steps"]
+assert len(tm["c"]["templates"]) == nt + 1, "the clone is a new template"
+assert rep["c"]["steps"][0] == {"clone": 3, "template": nt, "instance": ni - 1}, rep["c"]["steps"]
+assert rep["m"]["steps"][0]["merge_identical"] == 1 and len(tm["m"]["templates"]) == nt, rep["m"]["steps"]
+# AT as its instances: every instance's template (vertices and cells, exactly), transformation
+# and region. A shared vertex of the written AT takes the coordinates of the first instance that
+# has it, so the order of the instances moves it by the rounding of a transformation; the
+# instances themselves are compared exactly, and the shared vertices by their number.
+def instances(k):
+    t = tm[k]
+    return sorted(json.dumps([tp["vertices"], tp["cells"], t["transformations"][i["transformation"]],
+                              i["region"]]) for tp in t["templates"] for i in tp["instances"])
+def counts(k):
+    m = meshio.read(f"{base}.{k}.vtu")
+    return len(m.points), len(m.cells[0].data)
+assert instances("c") == instances("0") and counts("c") == counts("0"), "cloning changed AT"
+assert instances("m") == instances("0") and counts("m") == counts("0"), "merging changed AT"
+PYEOF
+  then
+    grep -q "clone: instance 3 has its own template" "$TMP/stderr" \
+      && pass "$name: --clone 3 and --merge-identical keep AT cell for cell ($(echo "$msg" | tail -1))" \
+      || fail "$name: no progress line for --clone"
+  else fail "$name: clone and merge: $(cat "$TMP/stderr") $msg"; fi
+  last=$($PY -c "import json,sys; print(sum(len(t['instances']) for t in json.load(open(sys.argv[1]))['templates']) - 1)" "$TMP/$name.tmesh")
+  "$BIN" adapt "$TMP/$name.tmesh" --clone 3 --refine-where "instance == $last" --merge-identical \
+    -o "$TMP/$name.l.tmesh" --vtu "$TMP/$name.l.vtu" --report "$TMP/$name.l.json" --quiet \
+    || fail "$name: local refinement of a clone"
+  "$BIN" adapt "$TMP/$name.tmesh" --refine-where "instance == 3" -o "$TMP/$name.g.tmesh" \
+    --report "$TMP/$name.g.json" --quiet || fail "$name: refinement of the template"
+  if msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.l.vtu" "$TMP/$name.l.json" $measure 2>&1) \
+    && added=$($PY -c "
+import json, sys
+l, g = (json.load(open(p)) for p in sys.argv[1:3])
+grow = lambda r: r['after']['cells_structure_instance'] - r['before']['cells_structure_instance']
+assert 0 < grow(l) < grow(g), (grow(l), grow(g))
+assert l['steps'][-1]['merge_identical'] == 0, l['steps']
+print(grow(l), grow(g))" "$TMP/$name.l.json" "$TMP/$name.g.json"); then
+    pass "$name: the cloned instance refined alone adds ${added% *} cells, its whole template ${added#* } ($(echo "$msg" | tail -1))"
+  else fail "$name: local refinement: $msg $added"; fi
+done
+expect_exit 2 "--clone of an instance that does not exist" -- \
+  "$BIN" adapt "$TMP/n8.tmesh" --clone 99 -o "$TMP/none99.tmesh" --quiet
+grep -q "clone 99: no such instance" "$TMP/stderr" && [ "$(wc -l < "$TMP/stderr")" -eq 1 ] \
+  && [ ! -e "$TMP/none99.tmesh" ] && pass "the message names --clone 99, nothing written" \
+  || fail "message: $(cat "$TMP/stderr")"
 
 # Bad input: exit 2, one line naming it, nothing written.
 out="$TMP/none.tmesh"

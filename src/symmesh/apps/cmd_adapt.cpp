@@ -1,7 +1,9 @@
-// symmesh adapt IN.tmesh [--refine-where EXPR]... [--smooth N] [--improve] [--delaunay]
-//   -o OUT.tmesh [--vtu OUT.vtu] [--report R.json] [--max-rounds N] [--quiet]
+// symmesh adapt IN.tmesh [--clone K]... [--refine-where EXPR]... [--smooth N] [--improve]
+//   [--delaunay] [--merge-identical] -o OUT.tmesh [--vtu OUT.vtu] [--report R.json] [--max-rounds
+//   N] [--quiet]
 // Section 5.2 / Technique 5.8 on a generated templated mesh — spec/adaptation.md#adapt-command
 #include "symmesh/adapt/templated_mesh_adaptation.h"
+#include "symmesh/adapt/tmesh_template_cloning.h"
 #include "symmesh/apps/commands.h"
 #include "symmesh/io/atomic_file.h"
 #include "symmesh/io/mesh_writers.h"
@@ -20,8 +22,9 @@ namespace {
 struct AdaptOptions {
   std::string in, out, vtu, report;
   std::vector<std::string> refine_where;
+  std::vector<std::size_t> clone; ///< instances, numbered as in the input
   std::size_t smooth = 0, max_rounds = 64, improve_rounds = 8;
-  bool delaunay = false, improve = false, quiet = false;
+  bool delaunay = false, improve = false, merge_identical = false, quiet = false;
 };
 
 std::string extension(const std::string& path) {
@@ -43,8 +46,10 @@ bool options_ok(const AdaptOptions& o) {
     print_error("adapt: --vtu " + o.vtu + ": expected a .vtu file name");
     return false;
   }
-  if (!o.delaunay && !o.improve && o.smooth == 0 && o.refine_where.empty()) {
-    print_error("adapt: nothing to do: give --delaunay, --smooth N, --improve or --refine-where");
+  if (!o.delaunay && !o.improve && o.smooth == 0 && o.refine_where.empty() && o.clone.empty() &&
+      !o.merge_identical) {
+    print_error("adapt: nothing to do: give --clone K, --refine-where, --smooth N, --improve, "
+                "--delaunay or --merge-identical");
     return false;
   }
   return true;
@@ -70,6 +75,28 @@ nlohmann::json to_json(const Counts& c) {
           {"cells_structure_instance", c.at_cells},
           {"vertices_structure_instance", c.at_vertices},
           {"smallest_angle_deg", c.quality}}; // the smallest dihedral angle in 3D
+}
+
+/// Section 5.2.1: each instance (numbered as in the input) gets its own copy of its template, in
+/// the given order; the report and the progress line give its template and its new number.
+template <class Say>
+void clone_instances(mesh::TemplatedMeshCompactSvb& t, const std::vector<std::size_t>& clone,
+                     nlohmann::json& steps, const Say& say) {
+  const std::size_t n = t.templated.instance_count();
+  std::vector<std::size_t> now(n); // the current number of each input instance
+  for (std::size_t g = 0; g < n; ++g) now[g] = g;
+  for (const std::size_t g : clone) {
+    if (g >= n)
+      throw std::invalid_argument("--clone " + std::to_string(g) +
+                                  ": no such instance (the mesh has " + std::to_string(n) + ")");
+    const auto c = adapt::clone_template(t, now[g]);
+    for (auto& q : now)
+      if (q > now[g]) --q;
+    now[g] = c.instance;
+    steps.push_back({{"clone", g}, {"template", c.template_index}, {"instance", c.instance}});
+    say("clone: instance " + std::to_string(g) + " has its own template " +
+        std::to_string(c.template_index) + " and is now instance " + std::to_string(c.instance));
+  }
 }
 
 int run_adapt(const AdaptOptions& o) {
@@ -104,6 +131,7 @@ int run_adapt(const AdaptOptions& o) {
         std::to_string(before.at_cells) + " cells in AT (" + std::to_string(added) +
         " direct instance pairs added)");
     nlohmann::json steps = nlohmann::json::array();
+    clone_instances(t, o.clone, steps, say);
     for (std::size_t k = 0; k < where.size(); ++k) {
       const auto n = adapt::refine_where(t, where[k]);
       steps.push_back({{"refine_where", o.refine_where[k]}, {"edges_bisected", n}});
@@ -130,6 +158,14 @@ int run_adapt(const AdaptOptions& o) {
           {{"delaunay", r.rounds}, {"flips", r.flips}, {"edges_bisected", r.bisections}});
       say("delaunay: " + std::to_string(r.flips) + " flips, " + std::to_string(r.bisections) +
           " interface edges bisected in " + std::to_string(r.rounds) + " rounds");
+    }
+    if (o.merge_identical) {
+      const auto before_merge = t.templated.templates.size();
+      const auto n = adapt::merge_identical_templates(t);
+      steps.push_back({{"merge_identical", n}, {"templates", t.templated.templates.size()}});
+      say("merge-identical: " + std::to_string(n) + " templates merged (" +
+          std::to_string(before_merge) + " -> " + std::to_string(t.templated.templates.size()) +
+          ")");
     }
     std::ostringstream why;
     if (!t.is_valid(&why)) throw std::logic_error("the adapted mesh is not valid: " + why.str());
@@ -181,14 +217,20 @@ void add_adapt(CLI::App& app, int& exit_code) {
       "Adapt a templated mesh (.tmesh from generate --templated) on its templates (Section 5.2): "
       "bisect the longest edge of cells that match --refine-where, smooth vertices (boundary "
       "vertices inside their patch, with their related copies), improve quality by smoothing and "
-      "flips, and make it Delaunay (Technique 5.8). Steps run in that order; every instance of a "
-      "template changes alike, so the mesh "
+      "flips, and make it Delaunay (Technique 5.8); --clone first gives instances their own "
+      "template, --merge-identical last merges identical templates (Section 5.2.1). Steps run "
+      "in that order; every instance of a template changes alike, so the mesh "
       "stays templated and symmetric, and the result is certified conforming before it is "
       "written.");
   cmd->add_option("mesh", o->in, "templated mesh (.tmesh)")->required();
   cmd->add_option("-o,--output", o->out, "adapted templated mesh (.tmesh)")->required();
   cmd->add_option("--vtu", o->vtu, "also write the structure instance as .vtu");
   cmd->add_option("--report", o->report, "JSON report: counts before/after, steps, seconds");
+  cmd->add_option("--clone", o->clone,
+                  "give instance K (global number, template-major, as in the input) its own copy "
+                  "of its template, so that later steps can change it alone (Section 5.2.1); "
+                  "repeatable; it becomes the last instance, and --refine-where sees the new "
+                  "numbers");
   cmd->add_option("--refine-where", o->refine_where,
                   "bisect the longest edge of every cell with an instance image where EXPR holds: "
                   "TERM [and TERM]..., TERM = NAME OP NUMBER, NAME in x y z (centroid) size "
@@ -205,6 +247,9 @@ void add_adapt(CLI::App& app, int& exit_code) {
                 "make AT Delaunay (Technique 5.8; every interior edge (2D) / triangle (3D) locally "
                 "Delaunay; 3D: template boundaries refined until no triangle is encroached, then "
                 "TetGen's constrained Delaunay tetrahedralization of each template)");
+  cmd->add_flag("--merge-identical", o->merge_identical,
+                "last step: merge templates that are identical (the same coordinates and cells) "
+                "into one, their instances together (Section 5.2.1)");
   cmd->add_option(
          "--max-rounds", o->max_rounds,
          "Technique 5.8: rounds of interface insertions before giving up (exit 1); 0 = flips only")

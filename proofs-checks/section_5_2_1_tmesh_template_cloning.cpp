@@ -1,0 +1,151 @@
+// Section 5.2.1 on generated templated meshes (.tmesh) — spec/adaptation.md#tmesh-cloning
+//
+// Claim (generated box grids, 2D and 3D, translated or with mirrored columns): cloning the
+// template of a random instance (adapt::clone_template, the identification tables following the
+// instance) gives a valid templated mesh, certified conforming with the same boundary measure,
+// whose AT is the input's (the same cells with the same coordinates, the same number of
+// vertices) and whose two templates are identical; merge_identical_templates merges them back
+// with AT unchanged again. When the clone is first changed (a template-interior edge bisected),
+// the templates are no longer identical and nothing is merged.
+// Dropped hypothesis (the templates are identical): merging the changed clone into the original
+// anyway gives its instance the original's cells, and AT changes.
+#include "proofs-checks/box_inputs.h"
+#include "proofs-checks/registry.h"
+#include "symmesh/adapt/tmesh_template_cloning.h"
+#include "symmesh/mesh/structure_instance.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace symmesh::proofs {
+namespace {
+
+constexpr const char* kClaim = "Section_5_2_1";
+
+using Cells = std::multiset<std::vector<std::array<double, 3>>>;
+
+/// AT's cells as point sets in AT's coordinates, independent of instance and vertex numbering.
+Cells structure_instance_cells(const mesh::TemplatedMeshCompactSvb& t) {
+  Cells out;
+  const int d = t.templated.point_dimension;
+  const mesh::StructureInstance at(t);
+  at.for_each_cell([&](const mesh::StructureInstance::Instance& in, std::size_t c,
+                       const std::array<mesh::IndexType, 4>&) {
+    const auto& m = in.mesh_template->mesh;
+    std::vector<std::array<double, 3>> cell;
+    for (int q = 0; q <= d; ++q) {
+      std::array<double, 3> image{0, 0, 0};
+      in.transformation->apply(m.vertex(std::size_t(m.cell(c)[q])), image.data());
+      cell.push_back(image);
+    }
+    std::sort(cell.begin(), cell.end());
+    out.insert(std::move(cell));
+  });
+  return out;
+}
+
+/// The first template-interior edge of template `ti` (not on a facet of exactly one cell).
+std::optional<adapt::TemplateEdge> interior_edge(const mesh::TemplatedMeshCompactSvb& t,
+                                                 std::size_t ti) {
+  const int d = t.templated.point_dimension;
+  const auto& m = t.templated.templates[ti].mesh;
+  std::map<std::vector<mesh::IndexType>, int> facets;
+  std::set<std::pair<mesh::IndexType, mesh::IndexType>> edges, boundary;
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    const auto* v = m.cell(c);
+    for (int a = 0; a <= d; ++a)
+      for (int b = a + 1; b <= d; ++b) edges.insert(std::minmax(v[a], v[b]));
+    for (int skip = 0; skip <= d; ++skip) {
+      std::vector<mesh::IndexType> f;
+      for (int k = 0; k <= d; ++k)
+        if (k != skip) f.push_back(v[k]);
+      std::sort(f.begin(), f.end());
+      ++facets[f];
+    }
+  }
+  for (const auto& [f, n] : facets)
+    if (n == 1)
+      for (std::size_t a = 0; a < f.size(); ++a)
+        for (std::size_t b = a + 1; b < f.size(); ++b) boundary.insert({f[a], f[b]});
+  for (const auto& e : edges)
+    if (!boundary.count(e)) return adapt::TemplateEdge{ti, e.first, e.second};
+  return std::nullopt;
+}
+
+void clone_and_merge(const boxes::BoxInput& g, bool change_clone, bool identical_only) {
+  const std::string text = g.description();
+  const auto failure = [&] { return text; };
+  const auto no_picture = [] { return std::string(); };
+  auto t = g.generate();
+  const double boundary = adapt::certify_conformity(t).boundary_measure;
+  const auto at = structure_instance_cells(t);
+  const auto vertices = mesh::StructureInstance(t).vertex_count();
+  const auto templates = t.templated.templates.size();
+  const auto n = t.templated.instance_count();
+  const auto instance = std::size_t(*rc::gen::inRange<int>(0, int(n)));
+  // The template of `instance` (box grids have one, instanced at least twice).
+  std::size_t original = 0;
+  for (std::size_t k = instance; k >= t.templated.templates[original].instance_count();)
+    k -= t.templated.templates[original++].instance_count();
+
+  const auto clone = adapt::clone_template(t, instance);
+  RC_TAG(t.identifications.empty() ? "no identifications" : "identifications follow");
+  SYMMESH_PROOF_ASSERT(clone.template_index == templates && clone.instance == n - 1, failure,
+                       no_picture);
+  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == at, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(mesh::StructureInstance(t).vertex_count() == vertices, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::identical_templates(t, original, clone.template_index), failure,
+                       no_picture);
+
+  if (!change_clone) {
+    SYMMESH_PROOF_ASSERT(adapt::merge_identical_templates(t) == 1, failure, no_picture);
+    SYMMESH_PROOF_ASSERT(t.templated.templates.size() == templates, failure, no_picture);
+    SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+    SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+    SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == at, failure, no_picture);
+    SYMMESH_PROOF_ASSERT(mesh::StructureInstance(t).vertex_count() == vertices, failure,
+                         no_picture);
+    return;
+  }
+  const auto edge = interior_edge(t, clone.template_index);
+  RC_PRE(edge.has_value());
+  adapt::bisect_edges(t, {*edge});
+  const auto changed = structure_instance_cells(t);
+  SYMMESH_PROOF_ASSERT(changed != at, failure, no_picture);
+  if (identical_only)
+    SYMMESH_PROOF_ASSERT(adapt::merge_identical_templates(t) == 0, failure, no_picture);
+  else
+    adapt::detail::merge_templates_unchecked(t, original, clone.template_index);
+  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == changed, failure, no_picture);
+}
+
+} // namespace
+
+void register_section_5_2_1_tmesh(std::vector<Property>& p) {
+  for (int d : {2, 3})
+    p.push_back({kClaim, "tmesh_clone_merge_keep_the_structure_instance_" + std::to_string(d) + "d",
+                 d, Kind::holds,
+                 "Section 5.2.1 on generated box grids: cloning a random instance's template "
+                 "(tables following it) and merging identical templates back keep AT, cell for "
+                 "cell, certified; a clone changed inside is not merged",
+                 [d] {
+                   return rc::detail::toProperty([d] {
+                     clone_and_merge(*boxes::box_grid(d), *rc::gen::arbitrary<bool>(), true);
+                   });
+                 },
+                 [d] {
+                   return rc::detail::toProperty(
+                       [d] { clone_and_merge(*boxes::box_grid(d), true, false); });
+                 }});
+}
+
+} // namespace symmesh::proofs

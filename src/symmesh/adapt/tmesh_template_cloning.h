@@ -1,0 +1,58 @@
+/// Section 5.2.1 on a generated templated mesh (.tmesh): template cloning and merging —
+/// spec/adaptation.md#tmesh-cloning
+///
+/// The exact core clones and merges templates of a TemplatedStructure, whose structure instance
+/// identifies equal points (adapt/template_cloning.h). A generated mesh identifies vertices by
+/// its compact SVB instead, so here the identification tables follow the instance: a table used
+/// by a pair that involves the cloned instance gets a copy that names the new template, and
+/// merging renames the merged template in every table (tables that become equal are kept once).
+/// Both leave AT unchanged: the same cells, the same coordinates, the same identified vertices.
+///
+/// Merging is offered for identical templates only (the same coordinates, bit for bit, and the
+/// same cells). Templates related by a rigid motion other than the identity are not merged on
+/// this layer: their rounded coordinates are not exactly the motion's images, and deciding the
+/// motion up to rounding would be a distance tolerance (the exact core decides it exactly).
+#pragma once
+#include "symmesh/mesh/templated_mesh.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace symmesh::adapt {
+
+/// Where a cloned instance went: the new template (the last one) and the instance's new global
+/// number (template-major numbering: the last instance).
+struct ClonedInstance {
+  std::size_t template_index = 0, instance = 0;
+};
+
+/// Template cloning: global instance `instance` gets its own copy of its template, appended as
+/// the last template; the other instances stay with the original. Instances of the original
+/// template after it move down by one in the global numbering.
+/// \pre t.is_valid(), `instance` < t.templated.instance_count(), and its template has at least
+/// two instances (the original must keep one); else std::invalid_argument
+ClonedInstance clone_template(mesh::TemplatedMeshCompactSvb& t, std::size_t instance);
+
+/// Templates i and j have the same vertex coordinates (compared as doubles) in the same order and
+/// the same cells.
+/// \pre i, j < t.templated.templates.size()
+bool identical_templates(const mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);
+
+/// Template merging, the inverse of cloning: template j's instances join template i (after i's
+/// own), template j is removed and later templates move down by one.
+/// \pre t.is_valid(), i != j, both in range, identical_templates(t, i, j); else
+/// std::invalid_argument naming the templates
+void merge_templates(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);
+
+/// Merges every template into the first template identical to it. Returns the number of
+/// templates merged away.
+/// \pre t.is_valid()
+std::size_t merge_identical_templates(mesh::TemplatedMeshCompactSvb& t);
+
+namespace detail {
+/// merge_templates without its identity precondition: the dropped hypothesis of the
+/// Section 5.2.1 property (a non-identical template's instances take the other's cells).
+void merge_templates_unchecked(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);
+} // namespace detail
+
+} // namespace symmesh::adapt
