@@ -17,8 +17,8 @@
 // block on a base slab (two templates, a T-junction), right-angled and convex or not, generated
 // as `symmesh generate` does, Technique 5.8 in 3D ends within 64 rounds with a certified
 // templated mesh of the same volume (exact) whose AT has every interior triangle locally
-// Delaunay, decided by exact in-sphere signs (see exact_delaunay_verdict for the coordinates and
-// the one allowance inside a template). Dropped (Lines 6-18, no boundary insertions: the
+// Delaunay, decided by exact in-sphere signs with no allowance (see exact_delaunay_verdict for the
+// coordinates). Dropped (Lines 6-18, no boundary insertions: the
 // templates are only re-tetrahedralized): on the block on its base, interface triangles are not
 // locally Delaunay.
 #include "proofs-checks/adaptation_support.h"
@@ -33,7 +33,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -158,14 +157,12 @@ int far_side(const std::array<ExactPoint, 4>& x) {
   return sgn(lifted_determinant({&x[0], &x[1], &x[2], &x[3]}, far));
 }
 
-/// Interior triangles of AT: how many, how many not locally Delaunay, and how many with an apex
-/// inside only by rounding. The last are ties of near-cospherical points inside one template:
-/// the library removes slivers flat to rounding (6V/L^3 <= 1e-9, which its writers could not
-/// keep positive in every written copy) by flips and accepts a template facet whose apex is
-/// inside by |D| / L^5 <= 1e-9 (technique_5_8_3d.cpp, non_ld_facets). Across instances it
-/// decides Definition 4.10 without allowance, and so does this check.
+/// Interior triangles of AT: how many, and how many not locally Delaunay. A cospherical tie
+/// (the apex exactly on the circumsphere) is locally Delaunay; an apex inside by any margin is
+/// not, also where the five points are cospherical up to rounding (the library resolves those
+/// by vertex deletion or insertion: technique_5_8_3d.cpp, resolve_slivers).
 struct DelaunayVerdict {
-  std::size_t interior = 0, not_locally_delaunay = 0, inside_by_rounding = 0, overfull = 0;
+  std::size_t interior = 0, not_locally_delaunay = 0, overfull = 0;
   mpq_class volume = 0;
 };
 
@@ -219,25 +216,13 @@ DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSvb& t) {
       std::sort(f.begin(), f.end());
       facets[f].push_back({c, apex});
     }
-  // Whether apex `a` of cell `d` lies strictly inside the circumsphere of cell `c`, and by more
-  // than the rounding allowance inside one instance (|D| / L^5 > 1e-9, L the longest distance
-  // among the five points: the library's allowance, see DelaunayVerdict).
-  enum Side { outside, inside_by_rounding, inside };
-  const auto side = [&](const ExactCell& c, const ExactCell& d, std::size_t a) {
+  // Whether apex `a` of cell `d` lies strictly inside the circumsphere of cell `c` (exact).
+  const auto inside = [&](const ExactCell& c, const ExactCell& d, std::size_t a) {
     const bool own = c.instance == d.instance;
     const auto& x = own ? c.in_template : c.image;
     const auto& e = own ? d.in_template[a] : d.image[a];
     const mpq_class det = lifted_determinant({&x[0], &x[1], &x[2], &x[3]}, e);
-    if (sgn(det) == 0 || sgn(det) != -(own ? c.far_in_template : c.far_image)) return outside;
-    if (!own) return inside;
-    double span = 0;
-    for (const auto* p : {&x[0], &x[1], &x[2], &x[3], &e})
-      for (const auto* q : {&x[0], &x[1], &x[2], &x[3], &e}) {
-        double dd = 0;
-        for (std::size_t i = 0; i < 3; ++i) dd += std::pow(mpq_class((*p)[i] - (*q)[i]).get_d(), 2);
-        span = std::max(span, std::sqrt(dd));
-      }
-    return std::abs(det.get_d()) / std::pow(span, 5) > 1e-9 ? inside : inside_by_rounding;
+    return sgn(det) != 0 && sgn(det) == -(own ? c.far_in_template : c.far_image);
   };
   for (const auto& [f, on] : facets) {
     if (on.size() > 2) ++out.overfull;
@@ -245,9 +230,8 @@ DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSvb& t) {
     ++out.interior;
     const auto& [c1, a1] = on[0];
     const auto& [c2, a2] = on[1];
-    const Side worst = std::max(side(cells[c1], cells[c2], a2), side(cells[c2], cells[c1], a1));
-    if (worst == inside) ++out.not_locally_delaunay;
-    if (worst == inside_by_rounding) ++out.inside_by_rounding;
+    if (inside(cells[c1], cells[c2], a2) || inside(cells[c2], cells[c1], a1))
+      ++out.not_locally_delaunay;
   }
   return out;
 }
@@ -269,8 +253,6 @@ void delaunay_after_technique_5_8_3d(const BoxInput& g, bool boundary_insertions
   SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
   SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
   const auto verdict = exact_delaunay_verdict(t);
-  RC_TAG(verdict.inside_by_rounding ? "ties inside a template decided by rounding"
-                                    : "no tie decided by rounding");
   SYMMESH_PROOF_ASSERT(verdict.overfull == 0, failure, no_picture);
   SYMMESH_PROOF_ASSERT(verdict.volume == g.measure(), failure, no_picture);
   SYMMESH_PROOF_ASSERT(
@@ -313,8 +295,7 @@ void register_technique_5_8(std::vector<Property>& p) {
                "grids of boxes, translated or mirrored, and on a block on a base slab (right "
                "angles), it ends within 64 rounds with a certified templated mesh of the same "
                "volume (exact) whose AT has every interior triangle locally Delaunay (exact "
-               "in-sphere signs; inside one template, ties of near-cospherical points within "
-               "|D|/L^5 <= 1e-9 are the library's documented allowance)",
+               "in-sphere signs, no allowance)",
                [] {
                  return rc::detail::toProperty([] {
                    delaunay_after_technique_5_8_3d(

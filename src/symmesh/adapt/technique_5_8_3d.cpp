@@ -278,9 +278,29 @@ void retetrahedralize(Session& s, const Round3& r) {
   }
 }
 
+/// Whether every instance's matrix is a signed permutation (translations, mirrors, quarter
+/// turns). Then the copies of a point on the interfaces of a template are exact, and points
+/// cospherical in the object are cospherical in the doubles. A rotation by 2π/n rounds those
+/// copies, which makes ties up to rounding systematic (every slice interface of a TSV).
+bool signed_permutation_matrices(const Session& s) {
+  for (std::size_t i = 0; i < s.template_of.size(); ++i) {
+    const auto& m = s.transformation(i).matrix;
+    for (std::size_t r = 0; r < 3; ++r) {
+      int nonzero = 0;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double x = m[r * 3 + c];
+        if (x != 0 && x != 1 && x != -1) return false;
+        nonzero += x != 0;
+      }
+      if (nonzero != 1) return false;
+    }
+  }
+  return true;
+}
+
 /// |D| / L^5 for apex e and cell c: D the in-sphere determinant det[q_i - e, |q_i - e|^2], L the
 /// largest distance among the five points. A perturbation of the coordinates by this fraction of
-/// L can change the in-sphere sign, so an apex inside by no more than ~1e-9 is a tie decided by
+/// L can change the in-sphere sign, so an apex inside by no more than ~1e-9 is a tie up to
 /// rounding — the sliver of four cocircular points has no stable circumsphere, while D scales
 /// with its volume (tests/cli/delaunay_check.py measures the same).
 double insphere_measure(const Work& w, const Cell& c, IndexType e) {
@@ -319,21 +339,35 @@ double insphere_measure(const Work& w, const Cell& c, IndexType e) {
   return span > 0 ? std::abs(det) / std::pow(span, 5) : 0;
 }
 
-/// The interior facets of the templates that are not locally Delaunay (the apex across strictly
-/// inside the circumsphere of a cell), as (template, facet).
-std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> non_ld_facets(const Session& s,
-                                                                            const Round3& r) {
-  std::vector<std::pair<std::size_t, std::array<IndexType, 3>>> out;
+/// An interior facet of a template that is not locally Delaunay: the apex of cell `across`
+/// lies strictly inside the circumsphere of cell `cell` (exact in-sphere sign on the doubles).
+struct NonLocallyDelaunay {
+  std::size_t t = 0;
+  std::array<IndexType, 3> facet{};
+  IndexType cell = -1;
+  IndexType apex = -1;
+};
+
+/// The interior facets of the templates that are not locally Delaunay, by the exact in-sphere
+/// sign: a cospherical tie (the apex on the circumsphere) is locally Delaunay. With
+/// `ties_up_to_rounding`, an apex inside by |D| / L^5 <= 1e-9 is a tie too (rotated copies).
+std::vector<NonLocallyDelaunay> non_ld_facets(const Session& s, const Round3& r,
+                                              bool ties_up_to_rounding) {
+  std::vector<NonLocallyDelaunay> out;
   for (std::size_t t = 0; t < s.w.size(); ++t) {
     const auto& w = s.w[t];
     for (const auto& [f, around] : r.facets[t]) {
       if (around.size() != 2) continue;
-      const Cell& c = w.cells[std::size_t(around[0])];
-      const IndexType e = apex(w.cells[std::size_t(around[1])], f);
-      if (CGAL::side_of_bounded_sphere(p3(w.p(c[0])), p3(w.p(c[1])), p3(w.p(c[2])), p3(w.p(c[3])),
-                                       p3(w.p(e))) == CGAL::ON_BOUNDED_SIDE &&
-          insphere_measure(w, c, e) > 1e-9)
-        out.emplace_back(t, f);
+      for (std::size_t side = 0; side < 2; ++side) {
+        const Cell& c = w.cells[std::size_t(around[side])];
+        const IndexType e = apex(w.cells[std::size_t(around[1 - side])], f);
+        if (CGAL::side_of_bounded_sphere(p3(w.p(c[0])), p3(w.p(c[1])), p3(w.p(c[2])), p3(w.p(c[3])),
+                                         p3(w.p(e))) == CGAL::ON_BOUNDED_SIDE &&
+            !(ties_up_to_rounding && insphere_measure(w, c, e) <= 1e-9)) {
+          out.push_back({t, f, around[side], e});
+          break;
+        }
+      }
     }
   }
   return out;
@@ -554,33 +588,55 @@ void delete_interior_vertices(Session& s, std::size_t t, const std::set<IndexTyp
   retetrahedralize_template(w, surface);
 }
 
-/// Slivers flat to rounding that no flip removed: four points of a symmetric object that lie on
-/// one circle (a point and its rotated copy on each interface of a slice, at two heights, span
-/// an isosceles trapezoid), so the Delaunay tetrahedralization may contain the flat cell on them.
-/// Such a sliver's template-interior vertices are deleted, or, when all four are boundary
-/// vertices, its centroid is inserted as a template-interior vertex (it lies strictly inside
-/// their circle and breaks the tie); then the template is re-tetrahedralized, a few times.
-/// Returns the vertices deleted and inserted.
-std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& rep) {
+/// The cells to resolve by vertex deletion or insertion, as (template, vertices): the slivers
+/// flat to rounding that no flip removed, or, once there are none, the cells with an interior
+/// facet that is not locally Delaunay followed by the apex across it. Both come from points of a
+/// symmetric object that lie on one circle or sphere, exactly or up to rounding (a point and its
+/// rotated copy on each interface of a slice, at two heights, span an isosceles trapezoid): the
+/// Delaunay cell on them is flat to rounding, so remove_slivers flipped it away and left the
+/// apex inside by a margin the doubles can just resolve. Such a tie is resolved here unless
+/// `ties_up_to_rounding` accepts it (non_ld_facets).
+std::vector<std::pair<std::size_t, std::vector<IndexType>>>
+degenerate_cells(const Session& s, bool ties_up_to_rounding) {
+  std::vector<std::pair<std::size_t, std::vector<IndexType>>> out;
+  for (const auto& [t, ci] : not_positive_everywhere(s)) {
+    const Cell& c = s.w[t].cells[std::size_t(ci)];
+    out.push_back({t, {c.begin(), c.end()}});
+  }
+  if (!out.empty()) return out;
+  const Round3 r(s);
+  for (const auto& n : non_ld_facets(s, r, ties_up_to_rounding)) {
+    const Cell& c = s.w[n.t].cells[std::size_t(n.cell)];
+    out.push_back({n.t, {c[0], c[1], c[2], c[3], n.apex}});
+  }
+  return out;
+}
+
+/// Resolves the degenerate cells (degenerate_cells): their template-interior vertices are
+/// deleted, or, when all are boundary vertices, the centroid of the cell is inserted as a
+/// template-interior vertex (it lies strictly inside the circumsphere and breaks the tie); then
+/// the template is re-tetrahedralized and flat cells flipped away, a few times. Returns the
+/// vertices deleted and inserted.
+std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& rep,
+                                                    bool ties_up_to_rounding) {
   std::size_t deleted = 0, inserted = 0;
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    const auto flat = not_positive_everywhere(s);
-    if (flat.empty()) break;
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const auto bad = degenerate_cells(s, ties_up_to_rounding);
+    if (bad.empty()) break;
     std::map<std::size_t, std::set<IndexType>> gone;
     std::map<std::size_t, std::vector<std::array<double, 3>>> added;
     std::map<std::size_t, std::set<IndexType>> boundary; // per template, its boundary vertices
-    for (const auto& [t, ci] : flat) {
+    for (const auto& [t, vs] : bad) {
       if (!boundary.count(t))
         for (const auto& f : surface_of(s.w[t])) boundary[t].insert(f.begin(), f.end());
       const auto& on = boundary[t];
-      const Cell& c = s.w[t].cells[std::size_t(ci)];
       bool interior = false;
-      for (IndexType v : c)
+      for (IndexType v : vs)
         if (!on.count(v)) gone[t].insert(v), interior = true;
       if (interior) continue;
       std::array<double, 3> m{0, 0, 0};
-      for (IndexType v : c)
-        for (int k = 0; k < 3; ++k) m[std::size_t(k)] += s.w[t].p(v)[k] / 4;
+      for (std::size_t q = 0; q < 4; ++q)
+        for (int k = 0; k < 3; ++k) m[std::size_t(k)] += s.w[t].p(vs[q])[k] / 4;
       added[t].push_back(m);
     }
     for (const auto& [t, vs] : gone) {
@@ -588,7 +644,7 @@ std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& 
       deleted += vs.size();
     }
     for (auto& [t, points] : added) {
-      if (gone.count(t)) continue; // indices changed; the next attempt sees the sliver again
+      if (gone.count(t)) continue; // indices changed; the next attempt sees the cell again
       const auto surface = surface_of(s.w[t]);
       for (const auto& q : points) s.w[t].add_vertex(q.data());
       retetrahedralize_template(s.w[t], surface);
@@ -641,7 +697,9 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
         retetrahedralize(s, r);
       }
       rep.flips += remove_slivers(s);
-      const auto [deleted, inserted] = resolve_slivers(s, rep);
+      // Ties up to rounding are accepted only where rotations round the interface copies.
+      const bool ties_up_to_rounding = !signed_permutation_matrices(s);
+      const auto [deleted, inserted] = resolve_slivers(s, rep, ties_up_to_rounding);
       rep.vertices_deleted += deleted;
       rep.vertices_inserted += inserted;
       if (const auto flat = not_positive_everywhere(s); !flat.empty()) {
@@ -654,15 +712,14 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
             "vertex deletion or insertion removed");
       }
       const Round3 r(s);
-      const auto not_ld = non_ld_facets(s, r);
-      if (!not_ld.empty()) {
-        const auto& [t, f] = not_ld.front();
-        throw std::logic_error("Technique 5.8: template " + std::to_string(t) + " facet {" +
-                               std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " +
-                               std::to_string(f[2]) + "} (and " +
-                               std::to_string(not_ld.size() - 1) +
-                               " more) is not locally Delaunay after the constrained Delaunay "
-                               "tetrahedralization");
+      if (const auto not_ld = non_ld_facets(s, r, ties_up_to_rounding); !not_ld.empty()) {
+        const auto& n = not_ld.front();
+        throw AdaptationLimit(
+            "Technique 5.8 in 3D: template " + std::to_string(n.t) + " facet {" +
+            std::to_string(n.facet[0]) + ", " + std::to_string(n.facet[1]) + ", " +
+            std::to_string(n.facet[2]) + "} (and " + std::to_string(not_ld.size() - 1) +
+            " more) is not locally Delaunay: its points are cospherical up to rounding, and "
+            "neither flips nor vertex deletion or insertion resolved the tie");
       }
       bad = non_tald_3d(s, r, index);
       if (bad.empty()) break;
