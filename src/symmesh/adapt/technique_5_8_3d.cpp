@@ -702,6 +702,8 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
       const auto [deleted, inserted] = resolve_slivers(s, rep, ties_up_to_rounding);
       rep.vertices_deleted += deleted;
       rep.vertices_inserted += inserted;
+      // Deleting vertices renumbers a template's vertices and its tables: index them again.
+      if (deleted) index = index_tables(s.t);
       if (const auto flat = not_positive_everywhere(s); !flat.empty()) {
         const Cell& c = s.w[flat.front().first].cells[std::size_t(flat.front().second)];
         throw AdaptationLimit(
