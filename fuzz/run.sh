@@ -4,7 +4,7 @@
 # (fuzz/corpus/<harness>/, which `make test` replays). Writes docs/fuzzing.md: executions,
 # coverage (libFuzzer's cov: edges) and findings per harness, with the machine and the command.
 # Usage: [FUZZ_PARALLEL=1] [FUZZ_WORKERS=N] bash fuzz/run.sh [seconds per harness] [harness...]
-# (default 120, all four; FUZZ_PARALLEL=1 runs them side by side; FUZZ_WORKERS=N runs N processes
+# (default 120, all five; FUZZ_PARALLEL=1 runs them side by side; FUZZ_WORKERS=N runs N processes
 # per harness on one shared corpus, as libFuzzer's -jobs does; FUZZ_REPORT_ONLY=1 only rewrites
 # the report).
 # Findings go to build-fuzz/<harness>/{crash,timeout,oom}-*; copy each into fuzz/corpus/<harness>/
@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 secs=${1:-120}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate adapt)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate adapt tmesh_cloning)
 report=docs/fuzzing.md
 # A timeout is wall-clock time: a niced campaign beside a build can be starved past it. Each
 # timeout input is run again alone; one that ends within the limit is kept as
