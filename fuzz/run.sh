@@ -98,9 +98,11 @@ campaign() {
   cp fuzz/corpus/"$h"/* "$work/corpus/" 2>/dev/null || true
   harness_sha "$h" > "$work/harness.sha"
   local log=$work/campaign.log
-  # The adaptation harness reads 3 bytes per operation: 31 bytes = up to 10 operations.
+  # The adaptation harness reads 3 bytes per operation: 31 bytes = up to 10 operations; the
+  # cloning harness ignores inputs longer than 41 bytes (20 operations).
   local max_len=4096
   [ "$h" = adapt ] && max_len=31
+  [ "$h" = tmesh_cloning ] && max_len=41
   # Speed: ASan keeps no allocation stacks (a finding is replayed with full stacks from its
   # artifact), and every harness but generate uses the plain scheduler: entropic's feature
   # bookkeeping took 22 % of the JSON harness's time (356 -> 481 inputs/s without it) and 53 % of
