@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -168,6 +170,38 @@ inline rc::Gen<BoxInput> block_on_base(int dimension) {
       },
       rc::gen::inRange(4, 7), rc::gen::inRange(1, 3), rc::gen::inRange(2, 5),
       rc::gen::inRange(2, 5), rc::gen::inRange(1, 4), rc::gen::inRange(0, 3));
+}
+
+/// The facets of exactly one cell of a template mesh of dimension d — its template boundary —
+/// as sorted vertex numbers.
+inline std::set<std::vector<mesh::IndexType>> one_cell_facets(const mesh::Mesh& m, int d) {
+  std::map<std::vector<mesh::IndexType>, int> count;
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    for (int skip = 0; skip <= d; ++skip) {
+      std::vector<mesh::IndexType> f;
+      for (int k = 0; k <= d; ++k)
+        if (k != skip) f.push_back(m.cell(c)[k]);
+      std::sort(f.begin(), f.end());
+      ++count[f];
+    }
+  std::set<std::vector<mesh::IndexType>> out;
+  for (const auto& [f, n] : count)
+    if (n == 1) out.insert(f);
+  return out;
+}
+
+/// d! times the measure (area, volume) of the simplex with corners p[0..d], exactly: every double
+/// is taken as the rational it is. Unsigned.
+inline mpq_class simplex_measure_times_factorial(const std::array<const double*, 4>& p, int d) {
+  std::array<std::array<mpq_class, 3>, 3> e;
+  for (int k = 1; k <= d; ++k)
+    for (int i = 0; i < d; ++i)
+      e[std::size_t(k - 1)][std::size_t(i)] = mpq_class(p[std::size_t(k)][i]) - mpq_class(p[0][i]);
+  const mpq_class det = d == 2 ? mpq_class(e[0][0] * e[1][1] - e[0][1] * e[1][0])
+                               : mpq_class(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                                           e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                                           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]));
+  return abs(det);
 }
 
 } // namespace symmesh::proofs::boxes

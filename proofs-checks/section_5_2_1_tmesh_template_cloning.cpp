@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -54,24 +53,15 @@ std::optional<adapt::TemplateEdge> interior_edge(const mesh::TemplatedMeshCompac
                                                  std::size_t ti) {
   const int d = t.templated.point_dimension;
   const auto& m = t.templated.templates[ti].mesh;
-  std::map<std::vector<mesh::IndexType>, int> facets;
   std::set<std::pair<mesh::IndexType, mesh::IndexType>> edges, boundary;
   for (std::size_t c = 0; c < m.cell_count(); ++c) {
     const auto* v = m.cell(c);
     for (int a = 0; a <= d; ++a)
       for (int b = a + 1; b <= d; ++b) edges.insert(std::minmax(v[a], v[b]));
-    for (int skip = 0; skip <= d; ++skip) {
-      std::vector<mesh::IndexType> f;
-      for (int k = 0; k <= d; ++k)
-        if (k != skip) f.push_back(v[k]);
-      std::sort(f.begin(), f.end());
-      ++facets[f];
-    }
   }
-  for (const auto& [f, n] : facets)
-    if (n == 1)
-      for (std::size_t a = 0; a < f.size(); ++a)
-        for (std::size_t b = a + 1; b < f.size(); ++b) boundary.insert({f[a], f[b]});
+  for (const auto& f : boxes::one_cell_facets(m, d))
+    for (std::size_t a = 0; a < f.size(); ++a)
+      for (std::size_t b = a + 1; b < f.size(); ++b) boundary.insert({f[a], f[b]});
   for (const auto& e : edges)
     if (!boundary.count(e)) return adapt::TemplateEdge{ti, e.first, e.second};
   return std::nullopt;

@@ -19,8 +19,6 @@
 
 #include <gmpxx.h>
 
-#include <map>
-
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -39,22 +37,9 @@ using Facets = std::vector<std::set<std::vector<mesh::IndexType>>>;
 /// The template boundary facets of every template (sorted vertex numbers): facets of exactly one
 /// cell of their template.
 Facets boundary_facets(const mesh::TemplatedMeshCompactSvb& t) {
-  const int d = t.templated.point_dimension;
   Facets out;
-  for (const auto& mt : t.templated.templates) {
-    std::map<std::vector<mesh::IndexType>, int> count;
-    for (std::size_t c = 0; c < mt.mesh.cell_count(); ++c)
-      for (int skip = 0; skip <= d; ++skip) {
-        std::vector<mesh::IndexType> f;
-        for (int k = 0; k <= d; ++k)
-          if (k != skip) f.push_back(mt.mesh.cell(c)[k]);
-        std::sort(f.begin(), f.end());
-        ++count[f];
-      }
-    out.emplace_back();
-    for (const auto& [f, n] : count)
-      if (n == 1) out.back().insert(f);
-  }
+  for (const auto& mt : t.templated.templates)
+    out.push_back(boxes::one_cell_facets(mt.mesh, t.templated.point_dimension));
   return out;
 }
 
@@ -66,18 +51,10 @@ mpq_class exact_measure(const mesh::TemplatedMeshCompactSvb& t) {
   for (const auto& mt : t.templated.templates) {
     mpq_class sum = 0;
     for (std::size_t c = 0; c < mt.mesh.cell_count(); ++c) {
-      std::array<std::array<mpq_class, 3>, 3> e;
-      const double* p0 = mt.mesh.vertex(std::size_t(mt.mesh.cell(c)[0]));
-      for (int k = 1; k <= d; ++k) {
-        const double* p = mt.mesh.vertex(std::size_t(mt.mesh.cell(c)[k]));
-        for (int i = 0; i < d; ++i)
-          e[std::size_t(k - 1)][std::size_t(i)] = mpq_class(p[i]) - mpq_class(p0[i]);
-      }
-      const mpq_class det = d == 2 ? mpq_class(e[0][0] * e[1][1] - e[0][1] * e[1][0])
-                                   : mpq_class(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                                               e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                                               e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]));
-      sum += abs(det);
+      std::array<const double*, 4> p{};
+      for (int k = 0; k <= d; ++k)
+        p[std::size_t(k)] = mt.mesh.vertex(std::size_t(mt.mesh.cell(c)[k]));
+      sum += boxes::simplex_measure_times_factorial(p, d);
     }
     total += sum * int(mt.instance_count());
   }

@@ -183,8 +183,10 @@ DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSvb& t) {
     ExactCell e;
     e.ids = ids;
     e.instance = in.index;
+    std::array<const double*, 4> corners{};
     for (std::size_t q = 0; q < 4; ++q) {
       const double* v = m.vertex(std::size_t(local[q]));
+      corners[q] = v;
       double image[3];
       in.transformation->apply(v, image);
       for (std::size_t i = 0; i < 3; ++i) {
@@ -192,16 +194,7 @@ DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSvb& t) {
         e.image[q][i] = image[i];
       }
     }
-    const auto& x = e.in_template;
-    ExactPoint u, v, w;
-    for (std::size_t i = 0; i < 3; ++i) {
-      u[i] = x[1][i] - x[0][i];
-      v[i] = x[2][i] - x[0][i];
-      w[i] = x[3][i] - x[0][i];
-    }
-    const mpq_class det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                          u[2] * (v[0] * w[1] - v[1] * w[0]);
-    out.volume += abs(det) / 6;
+    out.volume += boxes::simplex_measure_times_factorial(corners, 3) / 6;
     e.far_in_template = far_side(e.in_template);
     e.far_image = far_side(e.image);
     cells.push_back(std::move(e));
