@@ -38,6 +38,7 @@ void register_lemma_4_2_cyclotomic(std::vector<Property>&);
 void register_section_5_2_1(std::vector<Property>&);
 void register_section_5_2_1_tmesh(std::vector<Property>&);
 void register_section_5_2_2(std::vector<Property>&);
+void register_section_5_2_2_tmesh(std::vector<Property>&);
 void register_section_5_2_3(std::vector<Property>&);
 void register_section_5_2_4(std::vector<Property>&);
 void register_section_5_2_6(std::vector<Property>&);
@@ -74,6 +75,7 @@ const std::vector<Property>& all_properties() {
                          register_section_5_2_1,
                          register_section_5_2_1_tmesh,
                          register_section_5_2_2,
+                         register_section_5_2_2_tmesh,
                          register_section_5_2_3,
                          register_section_5_2_4,
                          register_section_5_2_6,

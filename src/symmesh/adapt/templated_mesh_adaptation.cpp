@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <map>
 #include <numbers>
+#include <iterator>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -578,11 +579,57 @@ std::vector<std::vector<std::vector<IndexType>>> boundary_facets_by_vertex(const
   return out;
 }
 
+/// The two ends of a straight crease through 3D boundary vertex v, sorted: its boundary facets
+/// (a closed fan) lie in two planes that meet in a line through v, and exactly two link vertices
+/// lie in both, on that line on either side of v. Then v lies inside one edge of its template's
+/// boundary subdivision and may slide along it (Section 5.2.2: within its patch, here a patch
+/// edge). Otherwise empty. Exact predicates decide.
+std::vector<IndexType> crease_ends(const Work& w, const std::vector<std::vector<IndexType>>& facets,
+                                   IndexType v) {
+  const P3 o = p3(w.p(v));
+  // The plane of a facet through v, as its two other vertices.
+  const auto other = [&](const std::vector<IndexType>& f) {
+    std::array<P3, 2> q;
+    std::size_t n = 0;
+    for (IndexType u : f)
+      if (u != v && n < 2) q[n++] = p3(w.p(u));
+    return q;
+  };
+  const auto in_plane = [&](const std::array<P3, 2>& plane, const std::vector<IndexType>& f) {
+    for (IndexType u : f)
+      if (CGAL::orientation(o, plane[0], plane[1], p3(w.p(u))) != CGAL::COPLANAR) return false;
+    return true;
+  };
+  const auto first = other(facets[0]);
+  if (CGAL::collinear(o, first[0], first[1])) return {};
+  std::optional<std::array<P3, 2>> second;
+  std::set<IndexType> on_first, on_second;
+  for (const auto& f : facets) {
+    auto& side = in_plane(first, f) ? on_first : on_second;
+    if (&side == &on_second) {
+      if (!second) second = other(f);
+      if (CGAL::collinear(o, (*second)[0], (*second)[1]) || !in_plane(*second, f)) return {};
+    }
+    for (IndexType u : f)
+      if (u != v) side.insert(u);
+  }
+  if (!second) return {};
+  std::vector<IndexType> ends;
+  std::set_intersection(on_first.begin(), on_first.end(), on_second.begin(), on_second.end(),
+                        std::back_inserter(ends));
+  if (ends.size() != 2) return {};
+  const P3 a = p3(w.p(ends[0])), b = p3(w.p(ends[1]));
+  return CGAL::collinear(a, o, b) && CGAL::collinear_are_strictly_ordered_along_line(a, o, b)
+             ? ends
+             : std::vector<IndexType>{};
+}
+
 /// The link of boundary vertex v in the template boundary when v may slide in its boundary patch
 /// (Section 5.2.2): its boundary facets form one flat disk — two collinear edges with v strictly
 /// between them (2D), or as many coplanar triangles as link vertices, each link vertex on two of
-/// them (3D). A vertex where the boundary bends lies in more than one patch and may not move:
-/// empty. Exact predicates decide.
+/// them (3D) — or, in 3D, two flat half-disks meeting in a straight crease through v, whose two
+/// ends on the crease are then the link (crease_ends). A vertex where the boundary bends
+/// otherwise lies in more than one patch and may not move: empty. Exact predicates decide.
 std::vector<IndexType>
 sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets, IndexType v) {
   std::map<IndexType, int> degree;
@@ -609,7 +656,7 @@ sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets, I
   if (k == link.size()) return {};
   const P3 b = p3(w.p(link[k]));
   for (IndexType u : link)
-    if (CGAL::orientation(o, a, b, p3(w.p(u))) != CGAL::COPLANAR) return {};
+    if (CGAL::orientation(o, a, b, p3(w.p(u))) != CGAL::COPLANAR) return crease_ends(w, facets, v);
   return link;
 }
 
@@ -681,6 +728,14 @@ bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve
     for (int i = 0; i < w.d; ++i) {
       old[m][std::size_t(i)] = w.p(moves[m].v)[i];
       changed = changed || at[m][std::size_t(i)] != old[m][std::size_t(i)];
+    }
+    // A crease vertex (two link vertices in 3D) must land on its crease exactly: the midpoint
+    // of a slanted crease's ends may round off it, and the boundary would change.
+    if (w.d == 3 && moves[m].link.size() == 2) {
+      const P3 a = p3(w.p(moves[m].link[0])), b = p3(w.p(moves[m].link[1]));
+      const P3 q = p3(at[m].data());
+      if (!CGAL::collinear(a, q, b) || !CGAL::collinear_are_strictly_ordered_along_line(a, q, b))
+        return false;
     }
   }
   if (!changed) return false;

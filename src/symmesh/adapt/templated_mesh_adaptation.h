@@ -88,9 +88,11 @@ struct SmoothReport {
 /// Section 5.2.2, Laplacian smoothing over `iterations` Gauss–Seidel sweeps. A template-interior
 /// vertex moves to the mean of its neighbours. A template-boundary vertex moves only inside its
 /// boundary patch: where its boundary facets form one flat disk (exact predicates), it moves to
-/// the mean of its boundary neighbours, and every vertex related to it through the
-/// identification tables moves with it to the image of that place (Equation 5.1); a vertex
-/// where the boundary bends, or one that the tables relate inconsistently (an irregular
+/// the mean of its boundary neighbours; in 3D, where they form two flat half-disks meeting in a
+/// straight crease through it, it moves along the crease to the midpoint of the crease's two
+/// ends, when that rounded point lies exactly on the crease. Every vertex related to it through
+/// the identification tables moves with it to the image of that place (Equation 5.1); a vertex
+/// where the boundary bends otherwise, or one that the tables relate inconsistently (an irregular
 /// instance graph, Figure 4.11), stays. A move is made when every cell around every moved vertex
 /// stays positively oriented (exact) and, with `improve_only`, their smallest quality grows.
 SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
