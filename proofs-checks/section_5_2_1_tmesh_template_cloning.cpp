@@ -5,10 +5,13 @@
 // instance) gives a valid templated mesh, certified conforming with the same boundary measure,
 // whose AT is the input's (the same cells with the same coordinates, the same number of
 // vertices) and whose two templates are identical; merge_identical_templates merges them back
-// with AT unchanged again. When the clone is first changed (a template-interior edge bisected),
-// the templates are no longer identical and nothing is merged.
+// with AT unchanged again. Splitting a random template along a random non-empty proper subset of
+// its cells (adapt::split_template) keeps AT the same way, and bisecting every template boundary
+// edge of the new part afterwards keeps AT conforming. When the clone is first changed (a
+// template-interior edge bisected), the templates are no longer identical and nothing is merged.
 // Dropped hypothesis (the templates are identical): merging the changed clone into the original
-// anyway gives its instance the original's cells, and AT changes.
+// anyway gives its instance the original's cells, and AT changes; splitting without identifying
+// the two parts along the cut gives AT more vertices and an open cut.
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/adapt/tmesh_template_cloning.h"
@@ -48,6 +51,28 @@ Cells structure_instance_cells(const mesh::TemplatedMeshCompactSvb& t) {
   return out;
 }
 
+/// What an operation that keeps AT must keep: the certificate's boundary measure, AT's cells as
+/// point sets and its vertex count.
+struct StructureInstanceRecord {
+  double boundary = 0;
+  Cells cells;
+  std::size_t vertices = 0;
+};
+
+StructureInstanceRecord record_of(const mesh::TemplatedMeshCompactSvb& t) {
+  return {adapt::certify_conformity(t).boundary_measure, structure_instance_cells(t),
+          mesh::StructureInstance(t).vertex_count()};
+}
+
+/// t is a valid templated mesh, certified conforming with the recorded boundary measure, whose
+/// AT has the recorded cells and vertex count.
+bool keeps_structure_instance(const mesh::TemplatedMeshCompactSvb& t,
+                              const StructureInstanceRecord& r) {
+  return t.is_valid() && adapt::certify_conformity(t, r.boundary).holds &&
+         structure_instance_cells(t) == r.cells &&
+         mesh::StructureInstance(t).vertex_count() == r.vertices;
+}
+
 /// The first template-interior edge of template `ti` (not on a facet of exactly one cell).
 std::optional<adapt::TemplateEdge> interior_edge(const mesh::TemplatedMeshCompactSvb& t,
                                                  std::size_t ti) {
@@ -72,9 +97,7 @@ void clone_and_merge(const boxes::BoxInput& g, bool change_clone, bool identical
   const auto failure = [&] { return text; };
   const auto no_picture = [] { return std::string(); };
   auto t = g.generate();
-  const double boundary = adapt::certify_conformity(t).boundary_measure;
-  const auto at = structure_instance_cells(t);
-  const auto vertices = mesh::StructureInstance(t).vertex_count();
+  const auto before = record_of(t);
   const auto templates = t.templated.templates.size();
   const auto n = t.templated.instance_count();
   const auto instance = std::size_t(*rc::gen::inRange<int>(0, int(n)));
@@ -87,35 +110,74 @@ void clone_and_merge(const boxes::BoxInput& g, bool change_clone, bool identical
   RC_TAG(t.identifications.empty() ? "no identifications" : "identifications follow");
   SYMMESH_PROOF_ASSERT(clone.template_index == templates && clone.instance == n - 1, failure,
                        no_picture);
-  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
-  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
-  SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == at, failure, no_picture);
-  SYMMESH_PROOF_ASSERT(mesh::StructureInstance(t).vertex_count() == vertices, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
   SYMMESH_PROOF_ASSERT(adapt::identical_templates(t, original, clone.template_index), failure,
                        no_picture);
 
   if (!change_clone) {
     SYMMESH_PROOF_ASSERT(adapt::merge_identical_templates(t) == 1, failure, no_picture);
     SYMMESH_PROOF_ASSERT(t.templated.templates.size() == templates, failure, no_picture);
-    SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
-    SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
-    SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == at, failure, no_picture);
-    SYMMESH_PROOF_ASSERT(mesh::StructureInstance(t).vertex_count() == vertices, failure,
-                         no_picture);
+    SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
     return;
   }
   const auto edge = interior_edge(t, clone.template_index);
   RC_PRE(edge.has_value());
   adapt::bisect_edges(t, {*edge});
   const auto changed = structure_instance_cells(t);
-  SYMMESH_PROOF_ASSERT(changed != at, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(changed != before.cells, failure, no_picture);
   if (identical_only)
     SYMMESH_PROOF_ASSERT(adapt::merge_identical_templates(t) == 0, failure, no_picture);
   else
     adapt::detail::merge_templates_unchecked(t, original, clone.template_index);
   SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
-  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, before.boundary).holds, failure, no_picture);
   SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == changed, failure, no_picture);
+}
+
+/// Splits a random template of g's mesh along a random non-empty proper subset of its cells;
+/// without `identify_cut`, the two parts of each instance are not identified along the cut.
+void split_random_part(const boxes::BoxInput& g, bool identify_cut) {
+  const std::string text = g.description();
+  const auto failure = [&] { return text; };
+  const auto no_picture = [] { return std::string(); };
+  auto t = g.generate();
+  adapt::expand_identifications(t); // as symmesh adapt does, for the bisection below
+  const auto before = record_of(t);
+  const auto templates = t.templated.templates.size();
+  const auto n = t.templated.instance_count();
+  const auto ti = std::size_t(*rc::gen::inRange<int>(0, int(templates)));
+  const auto cells = t.templated.templates[ti].mesh.cell_count();
+  RC_PRE(cells >= 2);
+  const auto flags = *rc::gen::container<std::vector<bool>>(cells, rc::gen::arbitrary<bool>());
+  std::vector<std::size_t> part;
+  for (std::size_t c = 0; c < cells; ++c)
+    if (flags[c]) part.push_back(c);
+  if (part.empty()) part.push_back(0);
+  if (part.size() == cells) part.pop_back();
+  RC_TAG(part.size() == 1 ? "one cell split off" : "several cells split off");
+
+  const auto split = identify_cut ? adapt::split_template(t, ti, part)
+                                  : adapt::detail::split_template(t, ti, part, false);
+  SYMMESH_PROOF_ASSERT(split == templates, failure, no_picture);
+  const auto& parts = t.templated.templates;
+  SYMMESH_PROOF_ASSERT(parts[split].mesh.cell_count() == part.size() &&
+                           parts[ti].mesh.cell_count() == cells - part.size(),
+                       failure, no_picture);
+  SYMMESH_PROOF_ASSERT(t.templated.instance_count() == n + parts[ti].instance_count(), failure,
+                       no_picture);
+  SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
+  // The new part can be changed alone: bisecting every edge of its template boundary (with the
+  // related edges, found through one table each) keeps AT conforming.
+  const int d = t.templated.point_dimension;
+  std::set<std::pair<mesh::IndexType, mesh::IndexType>> edges;
+  for (const auto& f : boxes::one_cell_facets(parts[split].mesh, d))
+    for (std::size_t a = 0; a < f.size(); ++a)
+      for (std::size_t b = a + 1; b < f.size(); ++b) edges.insert(std::minmax(f[a], f[b]));
+  std::vector<adapt::TemplateEdge> bisect;
+  for (const auto& [a, b] : edges) bisect.push_back({split, a, b});
+  adapt::bisect_edges(t, bisect);
+  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, before.boundary).holds, failure, no_picture);
 }
 
 } // namespace
@@ -136,6 +198,20 @@ void register_section_5_2_1_tmesh(std::vector<Property>& p) {
                    return rc::detail::toProperty(
                        [d] { clone_and_merge(*boxes::box_grid(d), true, false); });
                  }});
+  for (int d : {2, 3})
+    p.push_back(
+        {kClaim, "tmesh_split_keeps_the_structure_instance_" + std::to_string(d) + "d", d,
+         Kind::holds,
+         "Section 5.2.1 on generated box grids: splitting a random template along a "
+         "random cell subset (new template instanced like the old, parts identified "
+         "along the cut, tables split by part) keeps AT, cell for cell and vertex for "
+         "vertex, certified",
+         [d] {
+           return rc::detail::toProperty([d] { split_random_part(*boxes::box_grid(d), true); });
+         },
+         [d] {
+           return rc::detail::toProperty([d] { split_random_part(*boxes::box_grid(d), false); });
+         }});
 }
 
 } // namespace symmesh::proofs

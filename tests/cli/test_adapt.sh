@@ -235,6 +235,55 @@ print(grow(l), grow(g))" "$TMP/$name.l.json" "$TMP/$name.g.json"); then
     pass "$name: the cloned instance refined alone adds ${added% *} cells, its whole template ${added#* } ($(echo "$msg" | tail -1))"
   else fail "$name: local refinement: $msg $added"; fi
 done
+# --split-where (spec/adaptation.md#tmesh-cloning): every template with cells on both sides of
+# a plane through the middle of its x range splits in two, the new template instanced like the
+# old one; AT keeps its cells and vertices and conforms. Refining the split-off part alone then
+# reaches the related edges of the part that stayed (across the cut), and still conforms.
+for name in n8 tsv8; do
+  if [ $name = n8 ]; then measure="$n8_area"; else measure="$tsv8_measure"; fi
+  mid=$($PY -c "
+import json, sys
+xs = [v[0] for v in json.load(open(sys.argv[1]))['templates'][0]['vertices']]
+print((min(xs) + max(xs)) / 2)" "$TMP/$name.tmesh")
+  if "$BIN" adapt "$TMP/$name.tmesh" --split-where "x < $mid" -o "$TMP/$name.s.tmesh" \
+      --vtu "$TMP/$name.s.vtu" --report "$TMP/$name.s.json" 2> "$TMP/stderr" \
+    && msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.s.vtu" "$TMP/$name.s.json" $measure 2>&1) \
+    && nt=$($PY - "$TMP/$name" <<'PYEOF'
+import json, sys
+import meshio
+base = sys.argv[1]
+t0, ts = (json.load(open(f"{base}.{k}.tmesh")) for k in "0s")
+rep = json.load(open(f"{base}.s.json"))
+splits = rep["steps"][0]["splits"]
+assert len(splits) >= 1 and len(ts["templates"]) == len(t0["templates"]) + len(splits), rep["steps"]
+instances = lambda t: sum(len(tp["instances"]) for tp in t["templates"])
+for s in splits:
+    old, new = ts["templates"][s["template"]], ts["templates"][s["new_template"]]
+    assert len(new["cells"]) == s["cells"] and len(old["cells"]) + s["cells"] == \
+        len(t0["templates"][s["template"]]["cells"]), s
+    assert [i["transformation"] for i in new["instances"]] == \
+        [i["transformation"] for i in old["instances"]], "the new template is instanced like the old"
+counts = lambda k: (lambda m: (len(m.points), len(m.cells[0].data)))(meshio.read(f"{base}.{k}.vtu"))
+assert counts("s") == counts("0"), ("splitting changed AT", counts("s"), counts("0"))
+print(len(ts["templates"]) - 1)
+PYEOF
+); then
+    grep -q "split-where \"x < $mid\": [0-9]* cells of template 0 are now template" "$TMP/stderr" \
+      && pass "$name: --split-where \"x < $mid\" keeps AT's cells and vertices ($(echo "$msg" | tail -1))" \
+      || fail "$name: no progress line for --split-where"
+  else fail "$name: split: $(cat "$TMP/stderr") $msg"; continue; fi
+  if "$BIN" adapt "$TMP/$name.s.tmesh" --refine-where "template == $nt" --smooth 2 -o "$TMP/$name.sr.tmesh" \
+      --vtu "$TMP/$name.sr.vtu" --report "$TMP/$name.sr.json" --quiet 2> "$TMP/stderr" \
+    && msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.sr.vtu" "$TMP/$name.sr.json" $measure 2>&1); then
+    pass "$name: the split-off template refined alone, then smoothed, stays conforming ($(echo "$msg" | tail -1))"
+  else fail "$name: refining the split-off part: $(cat "$TMP/stderr") $msg"; fi
+done
+expect_exit 2 "--split-where naming an instance field" -- \
+  "$BIN" adapt "$TMP/n8.tmesh" --split-where "instance == 1" -o "$TMP/nonesplit.tmesh" --quiet
+grep -q "split-where \"instance == 1\": unknown name 'instance'" "$TMP/stderr" \
+  && [ "$(wc -l < "$TMP/stderr")" -eq 1 ] && [ ! -e "$TMP/nonesplit.tmesh" ] \
+  && pass "the message names 'instance' in --split-where, nothing written" \
+  || fail "message: $(cat "$TMP/stderr")"
 expect_exit 2 "--clone of an instance that does not exist" -- \
   "$BIN" adapt "$TMP/n8.tmesh" --clone 99 -o "$TMP/none99.tmesh" --quiet
 grep -q "clone 99: no such instance" "$TMP/stderr" && [ "$(wc -l < "$TMP/stderr")" -eq 1 ] \

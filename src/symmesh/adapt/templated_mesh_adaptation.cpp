@@ -1,6 +1,7 @@
 // Section 5.2 and Technique 5.8 on a generated templated mesh — spec/adaptation.md#tmesh-adaptation
 #include "symmesh/adapt/templated_mesh_adaptation.h"
 #include "symmesh/adapt/adaptation_work.h"
+#include "symmesh/adapt/tmesh_template_cloning.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 #include "symmesh/mesh/structure_instance.h"
 
@@ -1062,18 +1063,19 @@ SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t itera
   return r;
 }
 
-CellPredicate parse_cell_predicate(const std::string& expression) {
+namespace {
+/// Parses a cell predicate for `option`, whose names are `names` (listed in errors as `list`).
+CellPredicate parse_predicate(const std::string& expression, const std::string& option,
+                              const std::set<std::string>& names, const std::string& list) {
   std::vector<Term> terms;
   std::size_t i = 0;
   const auto skip = [&] {
     while (i < expression.size() && std::isspace(static_cast<unsigned char>(expression[i]))) ++i;
   };
   const auto fail = [&](const std::string& what) {
-    throw std::invalid_argument("--refine-where \"" + expression + "\": " + what + " at column " +
+    throw std::invalid_argument(option + " \"" + expression + "\": " + what + " at column " +
                                 std::to_string(i + 1));
   };
-  static const std::set<std::string> names{"x",       "y",      "z",        "size",
-                                           "quality", "region", "template", "instance"};
   for (;;) {
     skip();
     Term term;
@@ -1081,10 +1083,8 @@ CellPredicate parse_cell_predicate(const std::string& expression) {
            (std::isalpha(static_cast<unsigned char>(expression[i])) || expression[i] == '_'))
       term.name += expression[i++];
     if (!names.count(term.name))
-      fail(term.name.empty()
-               ? std::string("expected a name (x y z size quality region template "
-                             "instance)")
-               : "unknown name '" + term.name + "' (x y z size quality region template instance)");
+      fail(term.name.empty() ? "expected a name (" + list + ")"
+                             : "unknown name '" + term.name + "' (" + list + ")");
     skip();
     for (const char* op : {"<=", ">=", "==", "!=", "<", ">"})
       if (expression.compare(i, std::strlen(op), op) == 0) {
@@ -1114,6 +1114,52 @@ CellPredicate parse_cell_predicate(const std::string& expression) {
       if (!compare(field(c, term.name), term.op, term.value)) return false;
     return true;
   };
+}
+} // namespace
+
+CellPredicate parse_cell_predicate(const std::string& expression) {
+  return parse_predicate(expression, "--refine-where",
+                         {"x", "y", "z", "size", "quality", "region", "template", "instance"},
+                         "x y z size quality region template instance");
+}
+
+CellPredicate parse_template_cell_predicate(const std::string& expression) {
+  return parse_predicate(expression, "--split-where",
+                         {"x", "y", "z", "size", "quality", "template"},
+                         "x y z size quality template; a split acts on every instance, so "
+                         "region and instance are not names here");
+}
+
+std::vector<TemplateSplit> split_where(mesh::TemplatedMeshCompactSvb& t,
+                                       const CellPredicate& where) {
+  std::vector<std::vector<std::size_t>> parts;
+  {
+    auto copy = t;
+    const Session s(copy);
+    for (std::size_t ti = 0; ti < s.w.size(); ++ti) {
+      const auto& w = s.w[ti];
+      parts.emplace_back();
+      for (std::size_t c = 0; c < w.cells.size(); ++c) {
+        const auto& cell = w.cells[c];
+        CellView view;
+        IndexType a = -1, b = -1;
+        view.size = longest_edge(w, cell.data(), w.arity(), a, b);
+        view.quality = cell_quality(w, cell);
+        view.template_index = ti;
+        for (int k = 0; k < w.arity(); ++k)
+          for (int d = 0; d < w.d; ++d)
+            view.centroid[d] += w.p(cell[std::size_t(k)])[d] / w.arity();
+        if (where(view)) parts.back().push_back(c);
+      }
+    }
+  }
+  std::vector<TemplateSplit> out;
+  for (std::size_t ti = 0; ti < parts.size(); ++ti) {
+    if (parts[ti].empty() || parts[ti].size() == t.templated.templates[ti].mesh.cell_count())
+      continue;
+    out.push_back({ti, split_template(t, ti, parts[ti]), parts[ti].size()});
+  }
+  return out;
 }
 
 std::size_t refine_where(mesh::TemplatedMeshCompactSvb& t, const CellPredicate& where) {

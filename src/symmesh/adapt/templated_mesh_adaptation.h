@@ -100,7 +100,7 @@ SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t itera
 
 /// One instance image of a template cell, as --refine-where sees it.
 struct CellView {
-  double centroid[3] = {0, 0, 0}; ///< in AT's coordinates
+  double centroid[3] = {0, 0, 0}; ///< in AT's coordinates (split_where: the template's)
   double size = 0;                ///< longest edge
   double quality = 0;             ///< smallest angle (2D) or dihedral angle (3D), degrees
   std::size_t template_index = 0, instance = 0;
@@ -111,6 +111,24 @@ using CellPredicate = std::function<bool(const CellView&)>;
 /// Parses "TERM [and TERM]…", TERM = "NAME OP NUMBER", NAME one of x y z size quality region
 /// template instance, OP one of < <= > >= == !=. Throws std::invalid_argument naming the token.
 CellPredicate parse_cell_predicate(const std::string& expression);
+
+/// As parse_cell_predicate, for --split-where: a template's cells in template coordinates, so
+/// NAME is one of x y z size quality template (region and instance differ between instances).
+CellPredicate parse_template_cell_predicate(const std::string& expression);
+
+/// A template split by split_where: the template, the new template that took the cells that
+/// satisfied the predicate, and their number.
+struct TemplateSplit {
+  std::size_t template_index = 0, new_template = 0, cells = 0;
+};
+
+/// Section 5.2.1 template splitting (split_template, adapt/tmesh_template_cloning.h) of every
+/// template with cells on both sides of `where`, evaluated on the template's own cells
+/// (CellView::centroid in template coordinates; region and instance are 0). The cells that
+/// satisfy it become a new template, instanced like the old one; AT is unchanged. Templates
+/// made by the splits are not split again. Returns the splits in template order.
+std::vector<TemplateSplit> split_where(mesh::TemplatedMeshCompactSvb& t,
+                                       const CellPredicate& where);
 
 /// Section 5.2.4 refinement: the longest edge of every template cell with an instance image that
 /// satisfies `where` is bisected (with its related edges). Returns the edges bisected.

@@ -1,6 +1,7 @@
 // Section 5.2.1 on a generated templated mesh — spec/adaptation.md#tmesh-cloning
 #include "symmesh/adapt/tmesh_template_cloning.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <sstream>
@@ -167,6 +168,153 @@ void merge_templates(TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j) {
     throw std::invalid_argument("merge_templates: templates " + std::to_string(i) + " and " +
                                 std::to_string(j) + " are not identical");
   detail::merge_templates_unchecked(t, i, j);
+}
+
+namespace {
+
+/// The two parts of a template to split: the mesh of the cells that stay and of those in the
+/// part, and each old vertex's number in either (-1 where the part's cells do not use it).
+/// Vertices no cell uses stay.
+struct SplitParts {
+  mesh::Mesh stay_mesh, leave_mesh;
+  std::vector<IndexType> stay, leave;
+};
+
+SplitParts split_parts(const mesh::Mesh& m, const std::vector<char>& in_part) {
+  const std::size_t nv = m.vertex_count();
+  std::vector<char> in_stay(nv, 0), in_leave(nv, 0);
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    for (std::size_t q = 0; q < std::size_t(mesh::vertex_count(m.cell_types[c])); ++q)
+      (in_part[c] ? in_leave : in_stay)[std::size_t(m.cell(c)[q])] = 1;
+  SplitParts p;
+  p.stay_mesh.point_dimension = p.leave_mesh.point_dimension = m.point_dimension;
+  p.stay.assign(nv, -1);
+  p.leave.assign(nv, -1);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (in_stay[v] || !in_leave[v]) p.stay[v] = p.stay_mesh.add_vertex(m.vertex(v));
+    if (in_leave[v]) p.leave[v] = p.leave_mesh.add_vertex(m.vertex(v));
+  }
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    const auto& to = in_part[c] ? p.leave : p.stay;
+    std::vector<IndexType> cell;
+    for (std::size_t q = 0; q < std::size_t(mesh::vertex_count(m.cell_types[c])); ++q)
+      cell.push_back(to[std::size_t(m.cell(c)[q])]);
+    (in_part[c] ? p.leave_mesh : p.stay_mesh).add_cell(m.cell_types[c], cell.data());
+  }
+  return p;
+}
+
+/// The cells of template i in `part`, as flags; \pre as split_template.
+std::vector<char> part_flags(const TemplatedMeshCompactSvb& t, std::size_t i,
+                             const std::vector<std::size_t>& part) {
+  const auto nt = t.templated.templates.size();
+  if (i >= nt)
+    throw std::invalid_argument("split_template: no template " + std::to_string(i) +
+                                " (the mesh has " + std::to_string(nt) + ")");
+  const auto cells = t.templated.templates[i].mesh.cell_count();
+  std::vector<char> in_part(cells, 0);
+  for (const auto c : part) {
+    if (c >= cells)
+      throw std::invalid_argument("split_template: template " + std::to_string(i) +
+                                  " has no cell " + std::to_string(c) + " (it has " +
+                                  std::to_string(cells) + ")");
+    in_part[c] = 1;
+  }
+  const auto taken = std::size_t(std::count(in_part.begin(), in_part.end(), char(1)));
+  if (taken == 0 || taken == cells)
+    throw std::invalid_argument("split_template: the part must be a non-empty proper subset of "
+                                "template " +
+                                std::to_string(i) + "'s " + std::to_string(cells) + " cells, got " +
+                                std::to_string(taken));
+  return in_part;
+}
+
+} // namespace
+
+namespace detail {
+std::size_t split_template(TemplatedMeshCompactSvb& t, std::size_t i,
+                           const std::vector<std::size_t>& part, bool identify_cut) {
+  require_valid(t, "split_template");
+  const auto in_part = part_flags(t, i, part);
+  auto& templates = t.templated.templates;
+  auto parts = split_parts(templates[i].mesh, in_part);
+  const std::size_t n = t.templated.instance_count(), count = templates[i].instance_count();
+  std::size_t first = 0; // global number of template i's first instance
+  for (std::size_t p = 0; p < i; ++p) first += templates[p].instance_count();
+  mesh::MeshTemplate split;
+  split.mesh = std::move(parts.leave_mesh);
+  split.transformation_indices = templates[i].transformation_indices;
+  split.region_ids = templates[i].region_ids;
+  templates[i].mesh = std::move(parts.stay_mesh);
+  templates.push_back(std::move(split));
+  const auto ti = IndexType(i), tn = IndexType(templates.size() - 1);
+  // Template-major numbering: the new part of instance g of template i is instance n + (g -
+  // first), after every other instance; no other instance moves.
+  const auto moved = [&](IndexType g) { return IndexType(n + (std::size_t(g) - first)); };
+  // Where template vertex v is now: in both parts if it is on the cut. A pair is put into the
+  // table piece of every combination of parts that holds its two vertices, so that a facet of
+  // either part finds its related facets through one table, as bisection and smoothing do.
+  const auto places = [&](IndexType tmpl, IndexType v) {
+    std::vector<std::pair<IndexType, IndexType>> out;
+    if (tmpl != ti) {
+      out.emplace_back(tmpl, v);
+    } else {
+      if (parts.stay[std::size_t(v)] >= 0) out.emplace_back(ti, parts.stay[std::size_t(v)]);
+      if (parts.leave[std::size_t(v)] >= 0) out.emplace_back(tn, parts.leave[std::size_t(v)]);
+    }
+    return out;
+  };
+  // Every table naming template i splits into pieces by the parts its pairs' vertices are in.
+  const std::size_t old_tables = t.tables.size();
+  std::vector<char> droppable(old_tables, 0);
+  std::map<std::tuple<std::size_t, IndexType, IndexType>, IndexType> pieces;
+  for (std::size_t k = 0; k < old_tables; ++k) {
+    if (t.tables[k].from_template != ti && t.tables[k].to_template != ti) continue;
+    droppable[k] = 1;
+    const auto old = t.tables[k];
+    for (const auto& [a, b] : old.pairs)
+      for (const auto& [fa, va] : places(old.from_template, a))
+        for (const auto& [fb, vb] : places(old.to_template, b)) {
+          const auto [it, fresh] = pieces.emplace(std::tuple{k, fa, fb}, IndexType(0));
+          if (fresh) {
+            t.tables.push_back({fa, fb, {}});
+            it->second = IndexType(t.tables.size() - 1);
+          }
+          t.tables[std::size_t(it->second)].pairs.emplace_back(va, vb);
+        }
+  }
+  std::vector<mesh::InstanceIdentification> ids;
+  for (const auto& id : t.identifications) {
+    if (!droppable[std::size_t(id.table)]) {
+      ids.push_back(id);
+      continue;
+    }
+    for (auto it = pieces.lower_bound({std::size_t(id.table), IndexType(0), IndexType(0)});
+         it != pieces.end() && std::get<0>(it->first) == std::size_t(id.table); ++it)
+      ids.push_back({std::get<1>(it->first) == tn ? moved(id.from_instance) : id.from_instance,
+                     std::get<2>(it->first) == tn ? moved(id.to_instance) : id.to_instance,
+                     it->second});
+  }
+  // The cut: the vertices both parts use, the new part's number first.
+  mesh::VertexIdentificationTable cut{tn, ti, {}};
+  for (std::size_t v = 0; v < parts.stay.size(); ++v)
+    if (parts.stay[v] >= 0 && parts.leave[v] >= 0)
+      cut.pairs.emplace_back(parts.leave[v], parts.stay[v]);
+  if (identify_cut && !cut.pairs.empty()) {
+    t.tables.push_back(std::move(cut));
+    for (std::size_t k = 0; k < count; ++k)
+      ids.push_back({IndexType(n + k), IndexType(first + k), IndexType(t.tables.size() - 1)});
+  }
+  t.identifications = std::move(ids);
+  droppable.resize(t.tables.size(), 0);
+  compact_tables(t, droppable);
+  return std::size_t(tn);
+}
+} // namespace detail
+
+std::size_t split_template(TemplatedMeshCompactSvb& t, std::size_t i,
+                           const std::vector<std::size_t>& part) {
+  return detail::split_template(t, i, part, true);
 }
 
 std::size_t merge_identical_templates(TemplatedMeshCompactSvb& t) {

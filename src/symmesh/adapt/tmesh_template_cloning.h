@@ -1,4 +1,4 @@
-/// Section 5.2.1 on a generated templated mesh (.tmesh): template cloning and merging —
+/// Section 5.2.1 on a generated templated mesh (.tmesh): template cloning, merging and splitting —
 /// spec/adaptation.md#tmesh-cloning
 ///
 /// The exact core clones and merges templates of a TemplatedStructure, whose structure instance
@@ -49,7 +49,27 @@ void merge_templates(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_
 /// \pre t.is_valid()
 std::size_t merge_identical_templates(mesh::TemplatedMeshCompactSvb& t);
 
+/// Template splitting: the cells of template i with index in `part` become a new template,
+/// appended as the last one, with one instance per instance of i (the same transformation and
+/// region, in the same order, after every other instance); template i keeps its other cells.
+/// Each part keeps only the vertices its cells use, in their old order. The two parts of every
+/// instance are identified along the cut (the vertices both parts use) by one new table, and
+/// every table that names template i is split into pieces by the parts its vertices went to (a
+/// pair with a vertex on the cut goes into the pieces of both parts, so that a facet of either
+/// part finds its related facets through one table), so AT keeps its cells and its vertices.
+/// Returns the new template's index.
+/// \pre t.is_valid(), i in range, `part` a non-empty proper subset of i's cells (indices in
+/// range, repeats ignored); else std::invalid_argument
+std::size_t split_template(mesh::TemplatedMeshCompactSvb& t, std::size_t i,
+                           const std::vector<std::size_t>& part);
+
 namespace detail {
+/// split_template with the cut table left out when `identify_cut` is false: the dropped
+/// hypothesis of the Section 5.2.1 splitting property (the two parts of an instance are no
+/// longer identified along the cut, so AT gains vertices and the cut becomes boundary).
+std::size_t split_template(mesh::TemplatedMeshCompactSvb& t, std::size_t i,
+                           const std::vector<std::size_t>& part, bool identify_cut);
+
 /// merge_templates without its identity precondition: the dropped hypothesis of the
 /// Section 5.2.1 property (a non-identical template's instances take the other's cells).
 void merge_templates_unchecked(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);

@@ -1,4 +1,5 @@
-// symmesh adapt IN.tmesh [--clone K]... [--refine-where EXPR]... [--smooth N] [--improve]
+// symmesh adapt IN.tmesh [--clone K]... [--split-where EXPR]... [--refine-where EXPR]... [--smooth
+// N] [--improve]
 //   [--delaunay] [--merge-identical] -o OUT.tmesh [--vtu OUT.vtu] [--report R.json] [--max-rounds
 //   N] [--quiet]
 // Section 5.2 / Technique 5.8 on a generated templated mesh — spec/adaptation.md#adapt-command
@@ -21,7 +22,7 @@ namespace symmesh::apps {
 namespace {
 struct AdaptOptions {
   std::string in, out, vtu, report;
-  std::vector<std::string> refine_where;
+  std::vector<std::string> refine_where, split_where;
   std::vector<std::size_t> clone; ///< instances, numbered as in the input
   std::size_t smooth = 0, max_rounds = 64, improve_rounds = 8;
   bool delaunay = false, improve = false, merge_identical = false, quiet = false;
@@ -47,8 +48,9 @@ bool options_ok(const AdaptOptions& o) {
     return false;
   }
   if (!o.delaunay && !o.improve && o.smooth == 0 && o.refine_where.empty() && o.clone.empty() &&
-      !o.merge_identical) {
-    print_error("adapt: nothing to do: give --clone K, --refine-where, --smooth N, --improve, "
+      o.split_where.empty() && !o.merge_identical) {
+    print_error("adapt: nothing to do: give --clone K, --split-where, --refine-where, --smooth N, "
+                "--improve, "
                 "--delaunay or --merge-identical");
     return false;
   }
@@ -99,6 +101,25 @@ void clone_instances(mesh::TemplatedMeshCompactSvb& t, const std::vector<std::si
   }
 }
 
+/// Section 5.2.1: every template with cells on both sides of `where` (template coordinates)
+/// splits; the cells where it holds become a new template, instanced like the old one.
+template <class Say>
+void split_templates(mesh::TemplatedMeshCompactSvb& t, const std::string& expression,
+                     const adapt::CellPredicate& where, nlohmann::json& steps, const Say& say) {
+  const auto splits = adapt::split_where(t, where);
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& s : splits) {
+    list.push_back(
+        {{"template", s.template_index}, {"new_template", s.new_template}, {"cells", s.cells}});
+    say("split-where \"" + expression + "\": " + std::to_string(s.cells) + " cells of template " +
+        std::to_string(s.template_index) + " are now template " + std::to_string(s.new_template) +
+        ", instanced like it");
+  }
+  if (splits.empty())
+    say("split-where \"" + expression + "\": no template has cells on both sides");
+  steps.push_back({{"split_where", expression}, {"splits", list}});
+}
+
 int run_adapt(const AdaptOptions& o) {
   if (!options_ok(o)) return bad_input;
   std::unique_ptr<mesh::Progress> progress;
@@ -107,9 +128,10 @@ int run_adapt(const AdaptOptions& o) {
     if (progress) progress->message(line);
   };
   mesh::TemplatedMeshCompactSvb t;
-  std::vector<adapt::CellPredicate> where;
+  std::vector<adapt::CellPredicate> where, split;
   adapt::ConformityCertificate input;
   try {
+    for (const auto& e : o.split_where) split.push_back(adapt::parse_template_cell_predicate(e));
     for (const auto& e : o.refine_where) where.push_back(adapt::parse_cell_predicate(e));
     t = io::read_tmesh(o.in);
     // Throws on cells that are not triangles / tetrahedra.
@@ -132,6 +154,8 @@ int run_adapt(const AdaptOptions& o) {
         " direct instance pairs added)");
     nlohmann::json steps = nlohmann::json::array();
     clone_instances(t, o.clone, steps, say);
+    for (std::size_t k = 0; k < split.size(); ++k)
+      split_templates(t, o.split_where[k], split[k], steps, say);
     for (std::size_t k = 0; k < where.size(); ++k) {
       const auto n = adapt::refine_where(t, where[k]);
       steps.push_back({{"refine_where", o.refine_where[k]}, {"edges_bisected", n}});
@@ -218,7 +242,8 @@ void add_adapt(CLI::App& app, int& exit_code) {
       "bisect the longest edge of cells that match --refine-where, smooth vertices (boundary "
       "vertices inside their patch, with their related copies), improve quality by smoothing and "
       "flips, and make it Delaunay (Technique 5.8); --clone first gives instances their own "
-      "template, --merge-identical last merges identical templates (Section 5.2.1). Steps run "
+      "template, --split-where then splits templates along a cell set, --merge-identical last "
+      "merges identical templates (Section 5.2.1). Steps run "
       "in that order; every instance of a template changes alike, so the mesh "
       "stays templated and symmetric, and the result is certified conforming before it is "
       "written.");
@@ -231,6 +256,12 @@ void add_adapt(CLI::App& app, int& exit_code) {
                   "of its template, so that later steps can change it alone (Section 5.2.1); "
                   "repeatable; it becomes the last instance, and --refine-where sees the new "
                   "numbers");
+  cmd->add_option("--split-where", o->split_where,
+                  "split every template whose cells lie on both sides of EXPR, evaluated on the "
+                  "template's own cells (x y z: centroid in template coordinates; size quality "
+                  "template as for --refine-where): the cells where it holds become a new "
+                  "template with the same instances, identified along the cut, so AT is unchanged "
+                  "(Section 5.2.1); runs after --clone; repeatable");
   cmd->add_option("--refine-where", o->refine_where,
                   "bisect the longest edge of every cell with an instance image where EXPR holds: "
                   "TERM [and TERM]..., TERM = NAME OP NUMBER, NAME in x y z (centroid) size "
