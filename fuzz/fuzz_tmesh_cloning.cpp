@@ -1,19 +1,21 @@
-// libFuzzer harness: random sequences of template cloning and merging (Section 5.2.1 on a
-// generated templated mesh, adapt/tmesh_template_cloning.h; `symmesh adapt --clone K
-// --merge-identical`), mixed with edge bisections that make templates differ. The first byte
-// picks one of four small generated meshes (2D n-gon slices, a reflective-rotational star, the
-// cube halves and the 8-TSV in 3D); every further 2 bytes are one operation:
+// libFuzzer harness: random sequences of template cloning, merging and splitting (Section 5.2.1
+// on a generated templated mesh, adapt/tmesh_template_cloning.h; `symmesh adapt --clone K
+// --split-where EXPR --merge-identical`), mixed with edge bisections that make templates differ.
+// The first byte picks one of four small generated meshes (2D n-gon slices, a reflective-rotational
+// star, the cube halves and the 8-TSV in 3D); every further 2 bytes are one operation:
 //   - clone the template of an instance: must succeed when that template has two or more
 //     instances and throw std::invalid_argument otherwise (the documented precondition);
 //   - merge two templates: must succeed when they are distinct and identical, and throw
 //     std::invalid_argument otherwise;
 //   - merge every identical template;
+//   - split a template along a pseudo-random cell subset: must succeed when the subset is
+//     non-empty and proper, and throw std::invalid_argument otherwise;
 //   - bisect one template edge (with its related edges): the templates cloned before now differ.
 // After each operation the compact SVB is valid and the structure instance conforms (the
-// certificate, with the seed's boundary measure). Cloning and merging must leave AT exactly as
-// it was: the same number of AT vertices (the identifications survive), and the same cells, as a
-// multiset of (region, the written coordinates of the cell's vertices), compared bit for bit —
-// the transformations and template coordinates are not changed, so no rounding may enter.
+// certificate, with the seed's boundary measure). Cloning, merging and splitting must leave AT
+// exactly as it was: the same number of AT vertices (the identifications survive), and the same
+// cells, as a multiset of (region, the written coordinates of the cell's vertices), compared bit
+// for bit — the transformations and template coordinates are not changed, so no rounding may enter.
 // Any other exception, a failed check, a crash or a hang is a finding.
 #include "symmesh/adapt/templated_mesh_adaptation.h"
 #include "symmesh/adapt/tmesh_template_cloning.h"
@@ -118,7 +120,7 @@ void expect_refusal_unless(bool allowed, F&& op) {
 bool apply(TemplatedMeshCompactSvb& t, const std::uint8_t* op) {
   namespace adapt = symmesh::adapt;
   const auto& templates = t.templated.templates;
-  switch (op[0] % 4) {
+  switch (op[0] % 5) {
   case 0: { // clone the template of one instance
     const std::size_t instance = op[1] % t.templated.instance_count();
     std::size_t first = 0, ti = 0;
@@ -137,6 +139,16 @@ bool apply(TemplatedMeshCompactSvb& t, const std::uint8_t* op) {
   case 2:
     adapt::merge_identical_templates(t);
     return true;
+  case 3: { // split a template along about one in k of its cells, k = 2..7
+    const std::size_t ti = op[1] % templates.size(), k = 2 + op[0] / 5 % 6;
+    const std::size_t cells = templates[ti].mesh.cell_count();
+    std::vector<std::size_t> part;
+    for (std::size_t c = 0; c < cells; ++c)
+      if ((((c + op[1]) * 2654435761u) >> 13) % k == 0) part.push_back(c);
+    expect_refusal_unless(!part.empty() && part.size() < cells,
+                          [&] { adapt::split_template(t, ti, part); });
+    return true;
+  }
   default: { // bisect one edge of one cell, with its related edges
     adapt::expand_identifications(t);
     const std::size_t ti = op[1] % templates.size();
