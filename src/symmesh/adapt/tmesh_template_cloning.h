@@ -52,14 +52,13 @@ std::size_t merge_identical_templates(mesh::TemplatedMeshCompactSvb& t);
 /// Template splitting: the cells of template i with index in `part` become a new template,
 /// appended as the last one, with one instance per instance of i (the same transformation and
 /// region, in the same order, after every other instance); template i keeps its other cells.
-/// Each part keeps only the vertices its cells use, in their old order. The two parts of every
-/// instance are identified along the cut (the vertices both parts use) by one new table, and
-/// every table that names template i is split into pieces by the parts its vertices went to (a
-/// pair with a vertex on the cut goes into the pieces of both parts, so that a facet of either
-/// part finds its related facets through one table), so AT keeps its cells and its vertices.
-/// Returns the new template's index.
-/// \pre t.is_valid(), i in range, `part` a non-empty proper subset of i's cells (indices in
-/// range, repeats ignored); else std::invalid_argument
+/// Each part keeps the vertices its cells use, in their old order (vertices no cell uses stay in
+/// i). The two parts of every instance are identified along the cut (the vertices both parts use)
+/// by one new table, and every table that names template i is split into pieces by the parts its
+/// vertices went to (a pair with a vertex on the cut goes into the pieces of both parts, so that a
+/// facet of either part finds its related facets through one table), so AT keeps its cells and its
+/// vertices. Returns the new template's index. \pre t.is_valid(), i in range, `part` a non-empty
+/// proper subset of i's cells (indices in range, repeats ignored); else std::invalid_argument
 std::size_t split_template(mesh::TemplatedMeshCompactSvb& t, std::size_t i,
                            const std::vector<std::size_t>& part);
 
