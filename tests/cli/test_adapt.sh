@@ -274,8 +274,19 @@ PYEOF
   else fail "$name: split: $(cat "$TMP/stderr") $msg"; continue; fi
   if "$BIN" adapt "$TMP/$name.s.tmesh" --refine-where "template == $nt" --smooth 2 -o "$TMP/$name.sr.tmesh" \
       --vtu "$TMP/$name.sr.vtu" --report "$TMP/$name.sr.json" --quiet 2> "$TMP/stderr" \
-    && msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.sr.vtu" "$TMP/$name.sr.json" $measure 2>&1); then
-    pass "$name: the split-off template refined alone, then smoothed, stays conforming ($(echo "$msg" | tail -1))"
+    && msg=$($PY tests/cli/structure_instance_checks.py "$TMP/$name.sr.vtu" "$TMP/$name.sr.json" $measure 2>&1) \
+    && grown=$($PY - "$TMP/$name" "$nt" <<'PYEOF'
+import json, sys
+base, nt = sys.argv[1], int(sys.argv[2])
+s, sr = (json.load(open(f"{base}.{k}.tmesh")) for k in ("s", "sr"))
+# The split-off part's related edges on the cut were bisected in the part that stayed too.
+grown = [t for t in range(len(s["templates"])) if t != nt
+         and len(sr["templates"][t]["vertices"]) > len(s["templates"][t]["vertices"])]
+assert grown, "refining the split-off part bisected no edge of another template"
+print(len(grown))
+PYEOF
+); then
+    pass "$name: the split-off template refined alone (and $grown other template(s) along the cut), then smoothed, stays conforming ($(echo "$msg" | tail -1))"
   else fail "$name: refining the split-off part: $(cat "$TMP/stderr") $msg"; fi
 done
 expect_exit 2 "--split-where naming an instance field" -- \

@@ -19,6 +19,7 @@
 #include <iterator>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -1064,6 +1065,19 @@ SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t itera
 }
 
 namespace {
+/// What a cell predicate sees of cell `cell` of template `ti`, in the template's coordinates
+/// (instance and region are left unset); (a, b) is its longest edge.
+CellView template_cell_view(const Work& w, const Cell& cell, std::size_t ti, IndexType& a,
+                            IndexType& b) {
+  CellView view;
+  view.size = longest_edge(w, cell.data(), w.arity(), a, b);
+  view.quality = cell_quality(w, cell);
+  view.template_index = ti;
+  for (int k = 0; k < w.arity(); ++k)
+    for (int d = 0; d < w.d; ++d) view.centroid[d] += w.p(cell[std::size_t(k)])[d] / w.arity();
+  return view;
+}
+
 /// Parses a cell predicate for `option`, whose names are `names` (listed in errors as `list`).
 CellPredicate parse_predicate(const std::string& expression, const std::string& option,
                               const std::set<std::string>& names, const std::string& list) {
@@ -1132,6 +1146,10 @@ CellPredicate parse_template_cell_predicate(const std::string& expression) {
 
 std::vector<TemplateSplit> split_where(mesh::TemplatedMeshCompactSvb& t,
                                        const CellPredicate& where) {
+  // The Session reads cells unchecked, so an invalid mesh is refused before it is built.
+  std::ostringstream why;
+  if (!t.is_valid(&why))
+    throw std::invalid_argument("split_where: the templated mesh is not valid: " + why.str());
   std::vector<std::vector<std::size_t>> parts;
   {
     auto copy = t;
@@ -1140,16 +1158,8 @@ std::vector<TemplateSplit> split_where(mesh::TemplatedMeshCompactSvb& t,
       const auto& w = s.w[ti];
       parts.emplace_back();
       for (std::size_t c = 0; c < w.cells.size(); ++c) {
-        const auto& cell = w.cells[c];
-        CellView view;
         IndexType a = -1, b = -1;
-        view.size = longest_edge(w, cell.data(), w.arity(), a, b);
-        view.quality = cell_quality(w, cell);
-        view.template_index = ti;
-        for (int k = 0; k < w.arity(); ++k)
-          for (int d = 0; d < w.d; ++d)
-            view.centroid[d] += w.p(cell[std::size_t(k)])[d] / w.arity();
-        if (where(view)) parts.back().push_back(c);
+        if (where(template_cell_view(w, w.cells[c], ti, a, b))) parts.back().push_back(c);
       }
     }
   }
@@ -1170,14 +1180,10 @@ std::size_t refine_where(mesh::TemplatedMeshCompactSvb& t, const CellPredicate& 
     const auto& w = s.w[ti];
     const auto& mt = t.templated.templates[ti];
     for (const auto& c : w.cells) {
-      CellView view;
       IndexType a = -1, b = -1;
-      view.size = longest_edge(w, c.data(), w.arity(), a, b);
-      view.quality = cell_quality(w, c);
-      view.template_index = ti;
-      double centroid[3] = {0, 0, 0};
-      for (int k = 0; k < w.arity(); ++k)
-        for (int d = 0; d < w.d; ++d) centroid[d] += w.p(c[std::size_t(k)])[d] / w.arity();
+      auto view = template_cell_view(w, c, ti, a, b);
+      double centroid[3];
+      std::copy(view.centroid, view.centroid + 3, centroid);
       for (std::size_t k = 0; k < mt.instance_count(); ++k) {
         view.instance = first + k;
         view.region = mt.region_ids[k];

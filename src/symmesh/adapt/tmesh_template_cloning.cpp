@@ -300,7 +300,7 @@ std::size_t split_template(TemplatedMeshCompactSvb& t, std::size_t i,
   for (std::size_t v = 0; v < parts.stay.size(); ++v)
     if (parts.stay[v] >= 0 && parts.leave[v] >= 0)
       cut.pairs.emplace_back(parts.leave[v], parts.stay[v]);
-  if (identify_cut && !cut.pairs.empty()) {
+  if (identify_cut && !cut.pairs.empty() && count > 0) { // no instance, nothing to identify
     t.tables.push_back(std::move(cut));
     for (std::size_t k = 0; k < count; ++k)
       ids.push_back({IndexType(n + k), IndexType(first + k), IndexType(t.tables.size() - 1)});
