@@ -16,6 +16,11 @@ process with its peak RSS (wait4). Writes generate_3d.csv (every run), generate_
 (medians and ratios), the plot and the Markdown report, so that no figure is edited by hand.
 
 Usage: generate_3d.py SYMMESH OUTDIR [--repeats R] [--counts C1,C2,...] [--note TEXT]
+                      [--objects NAME,...] [--name NAME] [--no-gmsh] [--no-huge]
+
+--objects runs a subset of the objects and --name writes NAME.md, generate_NAME.csv,
+generate_NAME_summary.csv and generate_NAME_vs_order.png instead of 3d.md and generate_3d*, so
+that a run at other sizes (e.g. 10^7 tetrahedra for the larger TSVs) is a report of its own.
 
 The report states the 1-minute load average at the start and the end of the run, so that a run
 beside other work (e.g. a niced fuzz campaign on the other core) says so; --note adds a line.
@@ -109,6 +114,8 @@ def main():
     ap.add_argument("--note", default="", help="one more line for the report, e.g. what else ran")
     ap.add_argument("--no-gmsh", action="store_true", help="leave the Gmsh 3D peer out")
     ap.add_argument("--no-huge", action="store_true", help="leave the 10^8 run out")
+    ap.add_argument("--objects", default="", help="comma-separated subset of the objects")
+    ap.add_argument("--name", default="3d", help="report name: NAME.md, generate_NAME*.csv")
     a = ap.parse_args()
     roles = [("templated", "auto"), ("conventional", "conventional")]
     if not a.no_gmsh:
@@ -121,6 +128,14 @@ def main():
     rows = []
     objects = [(f"tsv-{n}", n, tsv_volume(n)) for n in TSVS] + [("finfet", 4, FINFET_VOLUME),
                                                                ("multi-tsv", 32, MULTI_TSV_VOLUME)]
+    if a.objects:
+        wanted = a.objects.split(",")
+        unknown = [w for w in wanted if w not in [o[0] for o in objects]]
+        if unknown:
+            ap.error(f"--objects: unknown object {unknown[0]}")
+        objects = [o for o in objects if o[0] in wanted]
+    if not a.no_huge and "tsv-128" not in [o[0] for o in objects]:
+        ap.error("the 10^8 run is of the 128-TSV: add tsv-128 to --objects or give --no-huge")
     huge = None
     with tempfile.TemporaryDirectory() as tmp:
         for name, n, volume in objects:
@@ -144,7 +159,7 @@ def main():
     a.load_end = os.getloadavg()[0]
     os.makedirs(a.outdir, exist_ok=True)
     fields = list(rows[0].keys())
-    with open(os.path.join(a.outdir, "generate_3d.csv"), "w", newline="") as f:
+    with open(os.path.join(a.outdir, f"generate_{a.name}.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
         w.writerows(rows)
@@ -187,20 +202,21 @@ def main():
                 "conventional_rss_bytes_per_tet": median(c, "rss_process_bytes") /
                                                   median(c, "cells_structure_instance"),
             })
-    with open(os.path.join(a.outdir, "generate_3d_summary.csv"), "w", newline="") as f:
+    with open(os.path.join(a.outdir, f"generate_{a.name}_summary.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(summary[0].keys()))
         w.writeheader()
         w.writerows(summary)
     largest = {name: max((s for s in summary if s["object"] == name), key=lambda s: s["tets"])
                for name, _, _ in objects}
     fig, ax = plt.subplots(figsize=(6, 4))
-    tsv = [largest[f"tsv-{n}"] for n in TSVS]
-    ax.plot(TSVS, [s["speedup"] for s in tsv], "o-", label="generation vs TetGen whole")
-    ax.plot(TSVS, [s["saving"] for s in tsv], "s-", label="memory saving (no SVB)")
-    ax.plot(TSVS, [s["cmd_speedup"] for s in tsv], "^-", label="whole command")
+    orders = [n for n in TSVS if f"tsv-{n}" in largest]
+    tsv = [largest[f"tsv-{n}"] for n in orders]
+    ax.plot(orders, [s["speedup"] for s in tsv], "o-", label="generation vs TetGen whole")
+    ax.plot(orders, [s["saving"] for s in tsv], "s-", label="memory saving (no SVB)")
+    ax.plot(orders, [s["cmd_speedup"] for s in tsv], "^-", label="whole command")
     if not a.no_gmsh:
-        ax.plot(TSVS, [s["speedup_gmsh"] for s in tsv], "v-", label="generation vs Gmsh whole")
-    ax.plot(TSVS, TSVS, "k--", label="n")
+        ax.plot(orders, [s["speedup_gmsh"] for s in tsv], "v-", label="generation vs Gmsh whole")
+    ax.plot(orders, orders, "k--", label="n")
     ax.set_xscale("log", base=2)
     ax.set_yscale("log", base=2)
     ax.set_xlabel("n (TSV slices)")
@@ -208,9 +224,9 @@ def main():
     ax.legend()
     ax.set_title("n-TSV at the largest size run")
     fig.tight_layout()
-    fig.savefig(os.path.join(a.outdir, "generate_3d_vs_order.png"), dpi=120)
+    fig.savefig(os.path.join(a.outdir, f"generate_{a.name}_vs_order.png"), dpi=120)
     if huge:
-        with open(os.path.join(a.outdir, "generate_3d_huge.csv"), "w", newline="") as f:
+        with open(os.path.join(a.outdir, f"generate_{a.name}_huge.csv"), "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(huge.keys()))
             w.writeheader()
             w.writerow(huge)
@@ -224,7 +240,9 @@ def write_report(a, summary, largest, wall, commit, huge):
          f"- machine: {platform.machine()}, {os.cpu_count()} cores, {cpu}, {platform.platform()}; "
          f"symmesh at commit {commit}",
          f"- command: `bench/generate_3d.py {a.symmesh} {a.outdir} --repeats {a.repeats} "
-         f"--counts {a.counts}" + (f" --note '{a.note}'" if a.note else "") +
+         f"--counts {a.counts}" + (f" --objects {a.objects}" if a.objects else "") +
+         (f" --name {a.name}" if a.name != "3d" else "") + (" --no-gmsh" if a.no_gmsh else "") +
+         (" --no-huge" if a.no_huge else "") + (f" --note '{a.note}'" if a.note else "") +
          f"`; wall time {wall:.0f} s; 1-minute load average {a.load_start:.2f} at the start, "
          f"{a.load_end:.2f} at the end" + (f"; {a.note}" if a.note else ""),
          f"- medians of {a.repeats} repeats, interleaved in one run: templated (`--method auto`, "
@@ -322,8 +340,8 @@ def write_report(a, summary, largest, wall, commit, huge):
         for ok, text in checks:
             L.append(f"- {'met' if ok else 'MISSED'}: {at}: {text}")
     L += ["",
-          "![ratios vs n](generate_3d_vs_order.png)", ""]
-    open(os.path.join(a.outdir, "3d.md"), "w").write("\n".join(L))
+          f"![ratios vs n](generate_{a.name}_vs_order.png)", ""]
+    open(os.path.join(a.outdir, f"{a.name}.md"), "w").write("\n".join(L))
 
 
 if __name__ == "__main__":
