@@ -21,6 +21,7 @@
 #include <map>
 #include <optional>
 #include <ostream>
+#include <tuple>
 #include <set>
 #include <utility>
 #include <sstream>
@@ -512,12 +513,8 @@ struct Box {
 };
 template <class FT, int D>
 Box<FT, D> box_of(const std::vector<Point<FT, D>>& p) {
-  Box<FT, D> b{p[0], p[0]};
-  for (const auto& q : p)
-    for (int d = 0; d < D; ++d) {
-      if (q[d] < b.lo[d]) b.lo[d] = q[d];
-      if (b.hi[d] < q[d]) b.hi[d] = q[d];
-    }
+  Box<FT, D> b;
+  for (int d = 0; d < D; ++d) std::tie(b.lo[d], b.hi[d]) = detail::coordinate_range<FT, D>(p, d);
   return b;
 }
 

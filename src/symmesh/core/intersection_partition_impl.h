@@ -41,12 +41,6 @@ struct Constraints {
   std::vector<HalfSpace<FT, D>> eq, ge;
 };
 
-template <class FT>
-Point<FT, 3> cross(const Point<FT, 3>& a, const Point<FT, 3>& b) {
-  return Point<FT, 3>{
-      {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-
 template <class FT, int D>
 Point<FT, D> negated(const Point<FT, D>& a) {
   return scaled<FT, D>(a, FT(-1));

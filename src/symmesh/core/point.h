@@ -40,6 +40,17 @@ FT dot(const Point<FT, D>& a, const Point<FT, D>& b) {
   return s;
 }
 
+/// The cross product a × b of two 3D vectors, exactly (one expression everywhere, so that lazy
+/// numbers built from it have one interval enclosure).
+template <class FT>
+Point<FT, 3> cross(const Point<FT, 3>& a, const Point<FT, 3>& b) {
+  Point<FT, 3> r;
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+  return r;
+}
+
 template <class FT, int D>
 Point<FT, D> zero_point() {
   Point<FT, D> r;

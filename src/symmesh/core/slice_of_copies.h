@@ -34,15 +34,6 @@ Point<FT, D> linear_image(const RigidTransformation<FT, D>& t, const Point<FT, D
   return r;
 }
 
-template <class FT>
-Point<FT, 3> cross(const Point<FT, 3>& a, const Point<FT, 3>& b) {
-  Point<FT, 3> r;
-  r[0] = a[1] * b[2] - a[2] * b[1];
-  r[1] = a[2] * b[0] - a[0] * b[2];
-  r[2] = a[0] * b[1] - a[1] * b[0];
-  return r;
-}
-
 /// The points of copy 0 of every template, T_{i,0}(p).
 template <class FT, int D>
 std::vector<Point<FT, D>> copy_zero_points(const TemplatedStructure<FT, D>& x) {

@@ -41,14 +41,7 @@ template <class FT>
 using PointIndex = std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>>;
 using Segment = std::array<std::size_t, 2>;
 
-template <class FT>
-P3<FT> cross(const P3<FT>& a, const P3<FT>& b) {
-  P3<FT> c;
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-  return c;
-}
+using core::cross;
 
 /// The symmetry group G of one face, as it acts on the face: elements[0] is the identity, no two
 /// elements act alike on the face's vertices, and reflection[k] says whether element k reverses

@@ -50,14 +50,7 @@ inline std::vector<std::size_t> read_index_ring(const json& j, const std::string
   return ring;
 }
 
-template <class FT>
-core::Point<FT, 3> cross(const core::Point<FT, 3>& a, const core::Point<FT, 3>& b) {
-  core::Point<FT, 3> c;
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-  return c;
-}
+using core::cross;
 
 /// One polygonal face (with holes): checked planar and simple, triangulated in its own plane.
 /// The triangles index the template's vertices.
