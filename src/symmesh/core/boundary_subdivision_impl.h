@@ -164,7 +164,7 @@ struct PlaneFrame {
   FT offset; ///< normal · x on the plane
   int drop = 2, u = 0, v = 1;
   explicit PlaneFrame(const PointVec<FT, 3>& tri) {
-    normal = cross3<FT>(tri[1] - tri[0], tri[2] - tri[0]);
+    normal = cross<FT>(tri[1] - tri[0], tri[2] - tri[0]);
     offset = dot<FT, 3>(normal, tri[0]);
     drop = 0;
     for (int a = 1; a < 3; ++a)
@@ -212,7 +212,7 @@ std::vector<std::vector<std::size_t>> flat_regions(const std::vector<PointVec<FT
     if (ks.size() != 2) continue;
     const auto& x = tris[ks[0]];
     const auto& y = tris[ks[1]];
-    const Point<FT, 3> n = cross3<FT>(x[1] - x[0], x[2] - x[0]);
+    const Point<FT, 3> n = cross<FT>(x[1] - x[0], x[2] - x[0]);
     bool coplanar = true;
     for (const auto& q : y) coplanar = coplanar && dot<FT, 3>(n, q - x[0]) == FT(0);
     if (coplanar) parent[find(ks[0])] = find(ks[1]);

@@ -50,15 +50,6 @@ FT cross2(const Point<FT, 2>& a, const Point<FT, 2>& b) {
   return a[0] * b[1] - a[1] * b[0];
 }
 
-template <class FT>
-Point<FT, 3> cross3(const Point<FT, 3>& a, const Point<FT, 3>& b) {
-  Point<FT, 3> r;
-  r[0] = a[1] * b[2] - a[2] * b[1];
-  r[1] = a[2] * b[0] - a[0] * b[2];
-  r[2] = a[0] * b[1] - a[1] * b[0];
-  return r;
-}
-
 template <class FT, int D>
 Point<FT, D> midpoint(const Point<FT, D>& a, const Point<FT, D>& b) {
   return scaled<FT, D>(a + b, FT(1) / FT(2));
@@ -90,11 +81,11 @@ PointVec<FT, 3> convex_cyclic_order(PointVec<FT, 3> p) {
   std::sort(p.begin(), p.end(), PointLess<FT, 3>());
   p.erase(std::unique(p.begin(), p.end()), p.end());
   if (p.size() < 3) return p;
-  const auto n = cross3<FT>(p[1] - p[0], p[2] - p[0]);
+  const auto n = cross<FT>(p[1] - p[0], p[2] - p[0]);
   Point<FT, 3> nn = n;
   // p[0..2] might be collinear; find any non-degenerate normal.
   for (std::size_t k = 3; k < p.size() && nn[0] == 0 && nn[1] == 0 && nn[2] == 0; ++k)
-    nn = cross3<FT>(p[1] - p[0], p[k] - p[0]);
+    nn = cross<FT>(p[1] - p[0], p[k] - p[0]);
   int drop = 0;
   for (int a = 1; a < 3; ++a)
     if (CGAL::abs(nn[a]) > CGAL::abs(nn[drop])) drop = a;
