@@ -13,6 +13,16 @@
 // Dropped hypothesis (a boundary vertex moves together with every related vertex): sliding the
 // middle vertices of the interface edges (x = 1) in their template only, without their copies
 // (x = 0), opens the interface, and the certificate fails.
+//
+// Claim 2 (a generated block on a base slab, 2D and 3D: two templates instanced once whose
+// interface ends in a T-junction, the block's bottom corners / edges lying in the base's flat
+// top side): one or two sweeps of adapt::smooth_vertices leave a valid templated mesh, certified
+// conforming with the same boundary measure and the same area / volume (exact). A vertex of the
+// T-junction is a corner or crease vertex of the block but a flat vertex of the base, so its
+// links are not images of each other and it stays (Equation 5.1 moves a vertex only with every
+// related vertex, each to the image of the same place). Dropped hypothesis: each boundary vertex
+// moved alone (adapt::detail::smooth_vertices_unlinked); the base's copy of a T-junction vertex
+// slides in the base's top side while the block's stays, and the certificate fails.
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/registry.h"
 
@@ -84,6 +94,37 @@ void crease_vertices_slide(int instances, int step, bool with_copies) {
   SYMMESH_PROOF_ASSERT(volume == in.measure(), failure, no_picture);
 }
 
+/// Twice the area (2D) or six times the volume (3D) of every cell of every instance, exactly.
+mpq_class measure_times_factorial(const mesh::TemplatedMeshCompactSvb& t) {
+  const int d = t.templated.point_dimension;
+  mpq_class total = 0;
+  for (const auto& tm : t.templated.templates)
+    for (std::size_t c = 0; c < tm.mesh.cell_count(); ++c) {
+      std::array<const double*, 4> p{};
+      for (int k = 0; k <= d; ++k)
+        p[std::size_t(k)] = tm.mesh.vertex(std::size_t(tm.mesh.cell(c)[k]));
+      total += boxes::simplex_measure_times_factorial(p, d) * int(tm.instance_count());
+    }
+  return total;
+}
+
+void boundary_smoothing_keeps_the_interface(const BoxInput& in, int sweeps, bool linked) {
+  const std::string text = in.description() + "\n(" + std::to_string(sweeps) + " sweeps, " +
+                           (linked ? "related vertices together)" : "each vertex alone)");
+  const auto failure = [&] { return text; };
+  const auto no_picture = [] { return std::string(); };
+  auto t = in.generate();
+  const double boundary = adapt::certify_conformity(t).boundary_measure;
+  const auto measure = measure_times_factorial(t);
+  SYMMESH_PROOF_ASSERT(measure / (in.dimension == 2 ? 2 : 6) == in.measure(), failure, no_picture);
+  const auto report = linked ? adapt::smooth_vertices(t, std::size_t(sweeps), false)
+                             : adapt::detail::smooth_vertices_unlinked(t, std::size_t(sweeps));
+  RC_TAG(report.boundary_moves > 0 ? "boundary vertices moved" : "no boundary move");
+  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(measure_times_factorial(t) == measure, failure, no_picture);
+}
+
 rc::Gen<int> steps() {
   return rc::gen::suchThat(rc::gen::inRange(-7, 8), [](int k) { return k != 0; });
 }
@@ -103,6 +144,25 @@ void register_section_5_2_2_tmesh(std::vector<Property>& p) {
              [] { crease_vertices_slide(*rc::gen::inRange(1, 3), *steps(), true); });
        },
        [] { return rc::detail::toProperty([] { crease_vertices_slide(2, *steps(), false); }); }});
+  for (int d : {2, 3})
+    p.push_back({kClaim, "tmesh_boundary_smoothing_keeps_a_t_junction_" + std::to_string(d) + "d",
+                 d, Kind::holds,
+                 "Section 5.2.2 / Eq. 5.1 on a generated block on a base slab (a T-junction where "
+                 "the block's corner or crease lies in the base's flat side): smoothing moves "
+                 "boundary vertices only with every related vertex, so the mesh stays templated "
+                 "(certified, same measure, exact)",
+                 [d] {
+                   return rc::detail::toProperty([d] {
+                     boundary_smoothing_keeps_the_interface(*boxes::block_on_base(d),
+                                                            *rc::gen::inRange(1, 3), true);
+                   });
+                 },
+                 [d] {
+                   return rc::detail::toProperty([d] {
+                     boundary_smoothing_keeps_the_interface(*boxes::block_on_base(d),
+                                                            *rc::gen::inRange(1, 3), false);
+                   });
+                 }});
 }
 
 } // namespace symmesh::proofs

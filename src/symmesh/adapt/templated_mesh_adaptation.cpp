@@ -673,15 +673,18 @@ struct SlidingMove {
 /// through the identification tables (closed under them), each to the centroid of its own link.
 /// The link is carried across each table, so a related vertex moves to the image of v's new
 /// place. False when some related vertex may not slide, its link is not the image of v's, or it
-/// is reached with two different links (the irregular instance graph of Figure 4.11).
+/// is reached with two different links (the irregular instance graph of Figure 4.11). Without
+/// `link_copies` (the dropped hypothesis of Equation 5.1) v's move alone.
 bool plan_sliding_move(const Session& s, const std::vector<TableIndex>& index,
                        const std::vector<std::vector<std::vector<std::vector<IndexType>>>>& bfacets,
-                       std::size_t t, IndexType v, std::vector<SlidingMove>& out) {
+                       std::size_t t, IndexType v, std::vector<SlidingMove>& out,
+                       bool link_copies = true) {
   out.clear();
   auto link = sliding_link(s.w[t], bfacets[t][std::size_t(v)], v);
   if (link.empty()) return false;
   std::map<std::pair<std::size_t, IndexType>, std::size_t> seen;
   out.push_back({t, v, link});
+  if (!link_copies) return true;
   seen[{t, v}] = 0;
   for (std::size_t next = 0; next < out.size(); ++next) {
     for (std::size_t k = 0; k < s.t.tables.size(); ++k)
@@ -766,7 +769,8 @@ bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve
   return valid;
 }
 
-SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only) {
+SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only,
+                    bool link_copies = true) {
   SmoothReport r;
   const auto index = index_tables(s.t);
   std::vector<std::vector<std::vector<std::vector<IndexType>>>> bfacets;
@@ -778,7 +782,7 @@ SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only) {
       for (IndexType v = 0; v < IndexType(w.vertex_count()); ++v) {
         if (w.inc[std::size_t(v)].empty()) continue;
         if (!bfacets[t][std::size_t(v)].empty()) {
-          if (plan_sliding_move(s, index, bfacets, t, v, moves) &&
+          if (plan_sliding_move(s, index, bfacets, t, v, moves, link_copies) &&
               apply_moves(s, moves, improve_only))
             r.boundary_moves += moves.size();
           continue;
@@ -1063,6 +1067,15 @@ SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t itera
   s.store();
   return r;
 }
+
+namespace detail {
+SmoothReport smooth_vertices_unlinked(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations) {
+  Session s(t);
+  const auto r = smooth(s, iterations, false, false);
+  s.store();
+  return r;
+}
+} // namespace detail
 
 namespace {
 /// What a cell predicate sees of cell `cell` of template `ti`, in the template's coordinates

@@ -98,6 +98,14 @@ struct SmoothReport {
 SmoothReport smooth_vertices(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
                              bool improve_only);
 
+namespace detail {
+/// smooth_vertices (not improve-only) with each template-boundary vertex moved alone, its
+/// related vertices left to their own moves: the dropped hypothesis of Equation 5.1 (a related
+/// vertex whose link is not the image of v's, e.g. on the other side of a T-junction, moves
+/// elsewhere or not at all, and the interface opens).
+SmoothReport smooth_vertices_unlinked(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations);
+} // namespace detail
+
 /// One instance image of a template cell, as --refine-where sees it.
 struct CellView {
   double centroid[3] = {0, 0, 0}; ///< in AT's coordinates (split_where: the template's)
