@@ -147,17 +147,27 @@ std::optional<RotationalSlice<FT, D>> slice_of_copy_zero(const TemplatedStructur
   return s;
 }
 
-/// Eq. 4.2 for a rotational structure: with the slice of copy 0 only the pairs inside copy 0 are
-/// decided (spec/lemmas.md#slice-separation); without it, find_instance_overlap(x, n).
+/// Eq. 4.2 for a rotational structure: with the slice of copy 0 (`copy_zero_in_slice` =
+/// slice_of_copy_zero(x, n) holds, decided by a caller that needs it for more than this) only
+/// the pairs inside copy 0 are decided (spec/lemmas.md#slice-separation); without it,
+/// find_instance_overlap(x, n).
 /// \pre as slice_of_copy_zero
 template <class FT, int D>
 std::optional<OverlapWitness> find_instance_overlap_by_slices(const TemplatedStructure<FT, D>& x,
-                                                              std::size_t n) {
-  if (!slice_of_copy_zero(x, n)) return find_instance_overlap(x, n);
+                                                              std::size_t n,
+                                                              bool copy_zero_in_slice) {
+  if (!copy_zero_in_slice) return find_instance_overlap(x, n);
   TemplatedStructure<FT, D> copy0;
   copy0.templates = x.templates;
   for (const auto& list : x.instances) copy0.instances.push_back({list[0]});
   return find_instance_overlap(copy0);
+}
+
+/// As above, deciding slice_of_copy_zero(x, n) itself.
+template <class FT, int D>
+std::optional<OverlapWitness> find_instance_overlap_by_slices(const TemplatedStructure<FT, D>& x,
+                                                              std::size_t n) {
+  return find_instance_overlap_by_slices(x, n, slice_of_copy_zero(x, n).has_value());
 }
 
 } // namespace symmesh::core

@@ -202,11 +202,12 @@ core::Lemma42Verdict certify_copies(const core::TemplatedStructure<FT, 3>& x,
 /// would be neither partitioned nor certified. Up to the rotation it suffices to decide the
 /// pairs (copy 0, copy j), 2 <= j <= n/2, exactly (geometry_interface_nonempty on the carriers).
 /// Returns the first touching pair as text, or nothing. When copy 0 lies in a slice of angle
-/// 2π/n off the axis, no pair needs deciding (spec/lemmas.md#slice-separation).
+/// 2π/n off the axis (`copy_zero_in_slice`: core::slice_of_copy_zero(x, n) holds, decided once
+/// by the caller), no pair needs deciding (spec/lemmas.md#slice-separation).
 template <class FT>
 std::optional<std::string> non_consecutive_contact(const core::TemplatedStructure<FT, 3>& x,
-                                                   std::size_t n) {
-  if (n < 4 || core::slice_of_copy_zero(x, n)) return std::nullopt;
+                                                   std::size_t n, bool copy_zero_in_slice) {
+  if (n < 4 || copy_zero_in_slice) return std::nullopt;
   // Certified interval boxes of the carriers' cells of copy k of every template filter the
   // candidates; only copies whose boxes meet copy 0's are decided exactly.
   const auto cell_boxes = [&](std::size_t k) {
@@ -244,6 +245,13 @@ std::optional<std::string> non_consecutive_contact(const core::TemplatedStructur
           return "T_{" + std::to_string(i + 1) + ",1} and T_{" + std::to_string(i2 + 1) + "," +
                  std::to_string(copies[k] + 1) + "} touch but are not consecutive rotated copies";
   return std::nullopt;
+}
+
+/// As above, deciding core::slice_of_copy_zero(x, n) itself.
+template <class FT>
+std::optional<std::string> non_consecutive_contact(const core::TemplatedStructure<FT, 3>& x,
+                                                   std::size_t n) {
+  return non_consecutive_contact(x, n, n >= 4 && core::slice_of_copy_zero(x, n).has_value());
 }
 
 } // namespace symmesh::gen::surface3

@@ -405,7 +405,11 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
   const auto t0_symmetry = Clock::now();
   std::string reason;
   std::size_t rotations = support::rotation_order(x, reason);
-  if (rotations > 0 && non_consecutive_contact(x, rotations)) rotations = 0;
+  // Decided once; a contact is found only when copy 0 is not in a slice, so rotations = 0 then
+  // goes with false.
+  const bool copy_zero_in_slice =
+      rotations > 0 && core::slice_of_copy_zero(x, rotations).has_value();
+  if (rotations > 0 && non_consecutive_contact(x, rotations, copy_zero_in_slice)) rotations = 0;
   core::TemplatedStructure<FT, 3> two_copies;
   if (rotations > 0) {
     two_copies.templates = x.templates;
@@ -413,7 +417,7 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
   }
   const double symmetry_seconds = seconds_since(t0_symmetry);
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations))
+  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice))
     throw std::invalid_argument(core::overlap_message(*overlap));
   GenerationResult r;
   // The subdivision and the mappings say which faces meet; their classes are not used.

@@ -307,6 +307,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   auto t0 = Clock::now();
   long f0 = minor_faults();
   std::size_t rotations = 0;
+  bool copy_zero_in_slice = false; // decided once: both checks below use it
   core::TemplatedStructure<FT, 3> two_copies;
   if (rotational) {
     std::string reason;
@@ -314,7 +315,8 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
     if (rotations == 0)
       throw std::invalid_argument("--method rotational: not a rotational slice structure: " +
                                   reason);
-    if (const auto contact = non_consecutive_contact(x, rotations))
+    copy_zero_in_slice = core::slice_of_copy_zero(x, rotations).has_value();
+    if (const auto contact = non_consecutive_contact(x, rotations, copy_zero_in_slice))
       throw std::invalid_argument("--method rotational: " + *contact +
                                   " (3D slices may meet only their neighbours; use bpp)");
     two_copies.templates = x.templates;
@@ -332,7 +334,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   const double symmetry_seconds = seconds_since(t0);
   const long symmetry_faults = minor_faults() - f0;
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations))
+  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice))
     throw std::invalid_argument(core::overlap_message(*overlap));
   const auto bpp = support::boundary_patch_stage(rotational || group ? two_copies : x, o,
                                                  symmetry_seconds, symmetry_faults, r);
