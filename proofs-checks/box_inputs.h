@@ -204,4 +204,23 @@ inline mpq_class simplex_measure_times_factorial(const std::array<const double*,
   return abs(det);
 }
 
+/// AT's area or volume from the template cells, exactly (the doubles taken as rationals; every
+/// instance is a rigid copy).
+inline mpq_class exact_measure(const mesh::TemplatedMeshCompactSvb& t) {
+  const int d = t.templated.point_dimension;
+  mpq_class total = 0;
+  for (const auto& mt : t.templated.templates) {
+    mpq_class sum = 0;
+    for (std::size_t c = 0; c < mt.mesh.cell_count(); ++c) {
+      std::array<const double*, 4> p{};
+      for (int k = 0; k <= d; ++k)
+        p[std::size_t(k)] = mt.mesh.vertex(std::size_t(mt.mesh.cell(c)[k]));
+      sum += simplex_measure_times_factorial(p, d);
+    }
+    total += sum * int(mt.instance_count());
+  }
+  total /= d == 2 ? 2 : 6;
+  return total;
+}
+
 } // namespace symmesh::proofs::boxes

@@ -43,25 +43,6 @@ Facets boundary_facets(const mesh::TemplatedMeshCompactSvb& t) {
   return out;
 }
 
-/// AT's area or volume from the template cells, exactly (the doubles taken as rationals; every
-/// instance is a rigid copy).
-mpq_class exact_measure(const mesh::TemplatedMeshCompactSvb& t) {
-  const int d = t.templated.point_dimension;
-  mpq_class total = 0;
-  for (const auto& mt : t.templated.templates) {
-    mpq_class sum = 0;
-    for (std::size_t c = 0; c < mt.mesh.cell_count(); ++c) {
-      std::array<const double*, 4> p{};
-      for (int k = 0; k <= d; ++k)
-        p[std::size_t(k)] = mt.mesh.vertex(std::size_t(mt.mesh.cell(c)[k]));
-      sum += boxes::simplex_measure_times_factorial(p, d);
-    }
-    total += sum * int(mt.instance_count());
-  }
-  total /= d == 2 ? 2 : 6;
-  return total;
-}
-
 /// A generated box mesh, refined where x < c in half of the cases (c from the bytes).
 struct Case {
   BoxInput input;
@@ -120,7 +101,7 @@ void quality_pass_keeps_the_templated_mesh(const Case& k, bool with_related) {
       certificate.holds, [&] { return text + "\n" + certificate.why; }, no_picture);
   SYMMESH_PROOF_ASSERT(mesh::StructureInstance(t).vertex_count() == v0, failure, no_picture);
   SYMMESH_PROOF_ASSERT(boundary_facets(t) == facets0, failure, no_picture);
-  SYMMESH_PROOF_ASSERT(exact_measure(t) == k.input.measure(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(boxes::exact_measure(t) == k.input.measure(), failure, no_picture);
   SYMMESH_PROOF_ASSERT(adapt::smallest_quality(t) >= q0, failure, no_picture);
 }
 
