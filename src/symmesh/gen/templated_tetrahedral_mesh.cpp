@@ -11,6 +11,7 @@
 #include "symmesh/number/cyclotomic_cgal.h"
 
 #include <cmath>
+#include <limits>
 
 namespace symmesh::gen {
 namespace {
@@ -135,6 +136,10 @@ WholeSurface whole_surface(const core::TemplatedStructure<FT, 3>& x,
 /// instanced once by the identity, and the vertices two regions share as the SVB tables.
 /// Returns the number of regions.
 std::size_t store_by_region(const TetrahedralMeshOutput& out, GenerationResult& r) {
+  // Local ids in arrays over the global vertices, not maps: with a map per region and a lookup
+  // per vertex and region pair this bookkeeping took a quarter of a whole-geometry run, time
+  // that the conventional baseline does not owe TetGen.
+  constexpr mesh::IndexType none = std::numeric_limits<mesh::IndexType>::max();
   std::map<int, std::vector<std::size_t>> by_region;
   for (std::size_t c = 0; c < out.tetrahedra.size(); ++c) by_region[out.region[c]].push_back(c);
   auto& tm = r.templated.templated;
@@ -142,17 +147,18 @@ std::size_t store_by_region(const TetrahedralMeshOutput& out, GenerationResult& 
   tm.point_dimension = 3;
   r.templated.tables.clear();
   r.templated.identifications.clear();
-  std::vector<std::map<std::size_t, mesh::IndexType>> local;
+  std::vector<std::vector<mesh::IndexType>> local; // per region: global vertex -> local id
   for (const auto& [region, cells] : by_region) {
     mesh::MeshTemplate t;
     t.mesh.point_dimension = 3;
-    std::map<std::size_t, mesh::IndexType> ids_here;
+    std::vector<mesh::IndexType> ids_here(out.points.size(), none);
     for (std::size_t c : cells)
-      for (std::size_t v : out.tetrahedra[c]) ids_here.emplace(v, 0);
-    for (auto& [v, l] : ids_here) l = t.mesh.add_vertex(out.points[v].data());
+      for (std::size_t v : out.tetrahedra[c]) ids_here[v] = 0;
+    for (std::size_t v = 0; v < ids_here.size(); ++v) // vertices in global order
+      if (ids_here[v] != none) ids_here[v] = t.mesh.add_vertex(out.points[v].data());
     for (std::size_t c : cells) {
       mesh::IndexType v[4];
-      for (int k = 0; k < 4; ++k) v[k] = ids_here.at(out.tetrahedra[c][std::size_t(k)]);
+      for (int k = 0; k < 4; ++k) v[k] = ids_here[out.tetrahedra[c][std::size_t(k)]];
       t.mesh.add_cell(mesh::ElementType::tetrahedron, v);
     }
     t.transformation_indices.push_back(mesh::IndexType(tm.transformations.size()));
@@ -164,9 +170,9 @@ std::size_t store_by_region(const TetrahedralMeshOutput& out, GenerationResult& 
   for (std::size_t a = 0; a < local.size(); ++a)
     for (std::size_t b = a + 1; b < local.size(); ++b) {
       mesh::VertexIdentificationTable table{mesh::IndexType(a), mesh::IndexType(b), {}};
-      for (const auto& [v, la] : local[a])
-        if (const auto it = local[b].find(v); it != local[b].end())
-          table.pairs.emplace_back(la, it->second);
+      for (std::size_t v = 0; v < out.points.size(); ++v)
+        if (local[a][v] != none && local[b][v] != none)
+          table.pairs.emplace_back(local[a][v], local[b][v]);
       if (table.pairs.empty()) continue;
       r.templated.identifications.push_back(
           {mesh::IndexType(a), mesh::IndexType(b), mesh::IndexType(r.templated.tables.size())});

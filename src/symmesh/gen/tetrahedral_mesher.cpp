@@ -9,7 +9,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <map>
+#include <cstdint>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
@@ -283,11 +284,22 @@ TetrahedralMeshOutput constrained_delaunay_tetrahedralization(const SurfaceInput
 
 std::optional<std::size_t> boundary_mismatch(const SurfaceInput& s,
                                              const TetrahedralMeshOutput& m) {
-  struct Use {
-    int count = 0, region = 0;
-    bool two_regions = false;
+  // One sorted array of the 4T tetrahedron faces, not a map: a map node per face made this check
+  // a tenth of template meshing (allocation and cache misses), and a whole-geometry run holds
+  // ~4·10^7 faces. 32-bit vertex ids suffice, TetGen numbers points with int.
+  if (m.points.size() > std::numeric_limits<std::uint32_t>::max())
+    throw MeshingError("the mesh has more points than a face key holds");
+  struct Face {
+    std::array<std::uint32_t, 3> key;
+    int region;
   };
-  std::map<std::array<std::size_t, 3>, Use> faces;
+  const auto key_of = [](const std::array<std::size_t, 3>& f) {
+    const auto g = sorted(f);
+    return std::array<std::uint32_t, 3>{std::uint32_t(g[0]), std::uint32_t(g[1]),
+                                        std::uint32_t(g[2])};
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * m.tetrahedra.size());
   for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
     const auto& c = m.tetrahedra[t];
     const int r = t < m.region.size() ? m.region[t] : 0;
@@ -295,23 +307,36 @@ std::optional<std::size_t> boundary_mismatch(const SurfaceInput& s,
       std::array<std::size_t, 3> f{};
       for (int k = 0, j = 0; k < 4; ++k)
         if (k != skip) f[std::size_t(j++)] = c[std::size_t(k)];
-      auto& u = faces[sorted(f)];
-      if (u.count++ == 0)
-        u.region = r;
-      else if (u.region != r)
-        u.two_regions = true;
+      faces.push_back({key_of(f), r});
     }
   }
-  std::set<std::array<std::size_t, 3>> input;
-  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-    const auto key = sorted(s.triangles[f]);
-    input.insert(key);
-    const auto it = faces.find(key);
-    if (it == faces.end()) return f;
-    // An input triangle inside one region (a double-sided inner facet) is kept too.
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.key < b.key || (a.key == b.key && a.region < b.region);
+  });
+  std::vector<std::array<std::uint32_t, 3>> input;
+  input.reserve(s.triangles.size());
+  for (const auto& t : s.triangles) {
+    for (std::size_t v : t)
+      if (v > std::numeric_limits<std::uint32_t>::max()) return &t - s.triangles.data();
+    input.push_back(key_of(t));
   }
-  for (const auto& [f, u] : faces)
-    if ((u.count == 1 || u.two_regions) && !input.count(f)) return s.triangles.size();
+  const auto face_less = [](const Face& a, const std::array<std::uint32_t, 3>& k) {
+    return a.key < k;
+  };
+  for (std::size_t f = 0; f < input.size(); ++f) {
+    // An input triangle inside one region (a double-sided inner facet) is kept too.
+    const auto it = std::lower_bound(faces.begin(), faces.end(), input[f], face_less);
+    if (it == faces.end() || it->key != input[f]) return f;
+  }
+  std::sort(input.begin(), input.end());
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    const bool boundary = j - i == 1 || faces[i].region != faces[j - 1].region;
+    if (boundary && !std::binary_search(input.begin(), input.end(), faces[i].key))
+      return s.triangles.size();
+    i = j;
+  }
   return std::nullopt;
 }
 
