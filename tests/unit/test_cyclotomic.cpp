@@ -373,3 +373,97 @@ TEST(CyclotomicField, IsCosSinAgreeWithTheBuiltElements) {
   EXPECT_FALSE(f->is_cos_2pi(Cyclotomic(0), 0, 128));
   EXPECT_FALSE(f->is_cos_2pi(other->cos_2pi(1, 64), 2, 128)); // another field: not compared
 }
+
+namespace {
+/// Σ a_i c^i at `bits` of precision, with c = 2cos(2π/m) from MPFR: an evaluation independent of
+/// the field's cached powers, filter and double-double code.
+double reference_value(const Cyclotomic& x, mpfr_prec_t bits, mpfr_t out) {
+  mpfr_t c, coef;
+  mpfr_inits2(bits, c, coef, static_cast<mpfr_ptr>(nullptr));
+  mpfr_const_pi(c, MPFR_RNDN);
+  mpfr_mul_ui(c, c, 2, MPFR_RNDN);
+  mpfr_div_ui(c, c, static_cast<unsigned long>(x.field()->m()), MPFR_RNDN);
+  mpfr_cos(c, c, MPFR_RNDN);
+  mpfr_mul_ui(c, c, 2, MPFR_RNDN);
+  mpfr_set_zero(out, 1);
+  const auto& a = x.coefficients();
+  for (std::size_t i = a.size(); i-- > 0;) {
+    mpfr_mul(out, out, c, MPFR_RNDN);
+    mpfr_set_q(coef, a[i].get_mpq_t(), MPFR_RNDN);
+    mpfr_add(out, out, coef, MPFR_RNDN);
+  }
+  mpfr_clears(c, coef, static_cast<mpfr_ptr>(nullptr));
+  return mpfr_get_d(out, MPFR_RNDN);
+}
+} // namespace
+
+TEST(CyclotomicField, ToIntervalIsNarrowWhereThePowerBasisCancels) {
+  // A cosine of K_128 in the basis 1, c, ..., c^31 has Σ|a_i c^i| up to 2^43 times its value:
+  // the double filter alone encloses it only to about 2^-10 relative (checked below, so this test
+  // would notice if the basis changed), the double-double evaluation to a few units in the last
+  // place. Every enclosure must contain the value (MPFR at 1000 bits, Horner, independent).
+  mpfr_t ref;
+  mpfr_init2(ref, 1000);
+  for (int m : {32, 64, 128}) {
+    const auto f = CyclotomicField::get(m);
+    double widest_filter = 0;
+    for (long k = 0; k < m; ++k)
+      for (const Cyclotomic& x :
+           {f->cos_2pi(k, m), f->sin_2pi(k, m), Cyclotomic(mpq_class(37, 100)) * f->cos_2pi(k, m),
+            f->cos_2pi(k, m) * f->sin_2pi(3, m) + Cyclotomic(mpq_class(-7, 3))}) {
+        if (x.is_zero()) continue;
+        const double v = reference_value(x, 1000, ref);
+        const auto [lo, hi] = x.to_interval();
+        EXPECT_TRUE(mpfr_cmp_d(ref, lo) >= 0 && mpfr_cmp_d(ref, hi) <= 0)
+            << "m = " << m << ", k = " << k << ": [" << lo << ", " << hi << "] misses " << x;
+        EXPECT_LE(hi - lo, 0x1p-46 * std::fabs(v)) << "m = " << m << ", k = " << k << ": " << x;
+        double sum = 0, bound = 0;
+        if (f->filtered_value(x.coefficients(), sum, bound))
+          widest_filter = std::max(widest_filter, bound / std::fabs(v));
+        double value = 0;
+        ASSERT_TRUE(f->double_double_value(x.coefficients(), value, bound)) << x;
+        EXPECT_LE(std::fabs(value - v), bound) << x;
+      }
+    if (m == 128) {
+      EXPECT_GT(widest_filter, 0x1p-20);
+    }
+  }
+  mpfr_clear(ref);
+}
+
+TEST(CyclotomicField, DoubleDoubleBoundHoldsOnRandomElements) {
+  // The bound of double_double_value against MPFR at 1000 bits, on random elements whose
+  // coefficients have up to 53-bit numerators and denominators (the split is exact there), and
+  // its refusal of a coefficient with more bits.
+  std::mt19937_64 rng(20261129);
+  mpfr_t ref, diff;
+  mpfr_inits2(1000, ref, diff, static_cast<mpfr_ptr>(nullptr));
+  int checked = 0;
+  for (int m : {5, 12, 60, 64, 128}) {
+    const auto f = CyclotomicField::get(m);
+    std::uniform_int_distribution<std::int64_t> num(-(std::int64_t(1) << 52), std::int64_t(1)
+                                                                                  << 52);
+    std::uniform_int_distribution<std::int64_t> den(1, std::int64_t(1) << 52);
+    for (int t = 0; t < 200; ++t) {
+      std::vector<mpq_class> c(f->degree());
+      for (auto& x : c) {
+        x = mpq_class(mpz_class(static_cast<long>(num(rng))),
+                      mpz_class(static_cast<long>(den(rng))));
+        x.canonicalize();
+      }
+      const Cyclotomic x(f, c);
+      double value = 0, bound = 0;
+      ASSERT_TRUE(f->double_double_value(x.coefficients(), value, bound));
+      reference_value(x, 1000, ref);
+      mpfr_sub_d(diff, ref, value, MPFR_RNDN);
+      EXPECT_LE(std::fabs(mpfr_get_d(diff, MPFR_RNDU)), bound) << x;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 1000);
+  mpq_class wide(mpz_class(1) << 60, 3);
+  const auto f = CyclotomicField::get(64);
+  double value = 0, bound = 0;
+  EXPECT_FALSE(f->double_double_value({wide, mpq_class(1)}, value, bound));
+  mpfr_clears(ref, diff, static_cast<mpfr_ptr>(nullptr));
+}

@@ -266,7 +266,14 @@ CyclotomicField::CyclotomicField(Private, int m, QPolynomial minimal_polynomial)
     reduction_small_.push_back(std::move(small));
   }
   const auto pw = powers(start_precision);
-  for (const auto& p : pw->c_pow) c_pow_double_.push_back(mpfr_get_d(p->lo, MPFR_RNDN));
+  mpfr_t rest;
+  mpfr_init2(rest, start_precision);
+  for (const auto& p : pw->c_pow) {
+    c_pow_double_.push_back(mpfr_get_d(p->lo, MPFR_RNDN));
+    mpfr_sub_d(rest, p->lo, c_pow_double_.back(), MPFR_RNDN); // exact: cancels leading bits
+    c_pow_low_.push_back(mpfr_get_d(rest, MPFR_RNDN));
+  }
+  mpfr_clear(rest);
 }
 
 CyclotomicField::~CyclotomicField() = default;
@@ -576,6 +583,62 @@ bool CyclotomicField::filtered_value(const std::vector<mpq_class>& a, double& va
   return true;
 }
 
+namespace {
+/// q = hi + lo with |hi + lo − q| <= 2u²|q| when its numerator and denominator are doubles:
+/// hi = n/d rounded, and the remainder n − hi·d is a double (that of a correctly rounded
+/// division), so fma gives it exactly; lo is its quotient by d, rounded.
+bool split_rational(const mpq_class& q, double& hi, double& lo) {
+  if (mpz_sizeinbase(q.get_num_mpz_t(), 2) > 53 || mpz_sizeinbase(q.get_den_mpz_t(), 2) > 53)
+    return false;
+  const double n = mpz_get_d(q.get_num_mpz_t()), d = mpz_get_d(q.get_den_mpz_t());
+  hi = n / d;
+  lo = std::fma(-hi, d, n) / d;
+  return true;
+}
+
+/// s + t = a + b exactly (Knuth's TwoSum).
+void two_sum(double a, double b, double& s, double& t) {
+  s = a + b;
+  const double bb = s - a;
+  t = (a - (s - bb)) + (b - bb);
+}
+} // namespace
+
+bool CyclotomicField::double_double_value(const std::vector<mpq_class>& a, double& value,
+                                          double& bound) const {
+  // Per non-zero coefficient a_i = h + l (split_rational) and c^i = C + L (c_pow_double_,
+  // c_pow_low_; |C + L − c^i| <= 1.01u²|c^i| from the 128-bit enclosure), with u = 2^-53:
+  //   p + q = h·C exactly (fma), r = h·L + l·C rounded twice, l·L dropped;
+  //   s + t = s + p exactly (two_sum), and e accumulates t + q + r.
+  // Errors, with P = Σ|h·C| (`mag`) and Q = Σ(|t| + |q| + |r|) (`small`), both as computed:
+  //   the splits of a_i and c^i and the dropped l·L: <= 5.1u²|h·C| per term;
+  //   r's two roundings: <= 2u(|h·L| + |l·C|)(1 + u) <= 4.1u²|h·C|;
+  //   e, a floating sum of 3d terms: <= γ_3d·Q <= 3.1d·u·Q (3d·u < 0.01);
+  //   value = s + e rounded: <= u|value|.
+  // The bound 2u|value| + 16u²·P + 4d·u·Q covers these with margin for the rounding of P and Q.
+  constexpr double u = 0x1p-53;
+  double s = 0, e = 0, mag = 0, small = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i] == 0) continue;
+    double h = 0, l = 0;
+    if (!split_rational(a[i], h, l) || !(std::fabs(h) > 1e-200 && std::fabs(h) < 1e200))
+      return false;
+    const double C = c_pow_double_[i], L = c_pow_low_[i];
+    const double p = h * C;
+    const double q = std::fma(h, C, -p);
+    const double r = h * L + l * C;
+    double t = 0;
+    two_sum(s, p, s, t);
+    e += (t + q) + r;
+    mag += std::fabs(p);
+    small += std::fabs(t) + std::fabs(q) + std::fabs(r);
+  }
+  if (!(mag < 1e200)) return false;
+  value = s + e;
+  bound = 2 * u * std::fabs(value) + 16 * u * u * mag + 4.0 * d_ * u * small;
+  return true;
+}
+
 int CyclotomicField::filtered_sign(const std::vector<mpq_class>& a) const {
   double sum = 0, bound = 0;
   if (!filtered_value(a, sum, bound)) return 0;
@@ -610,6 +673,9 @@ int CyclotomicField::filtered_sign_of_difference(const std::vector<mpq_class>& a
 int CyclotomicField::sign(const std::vector<mpq_class>& a) const {
   if (only_constant(a)) return sgn(a[0]);
   if (const int s = filtered_sign(a)) return s;
+  double value = 0, bound = 0;
+  if (double_double_value(a, value, bound) && (value > bound || value < -bound))
+    return value > 0 ? 1 : -1;
   // a ≠ 0 and 1, c, ..., c^{d-1} are linearly independent over Q (for the true minimal
   // polynomial), so the value is non-zero and the enclosures shrink onto it.
   for (long prec = start_precision; prec <= max_precision_bits; prec *= 2) {
@@ -627,9 +693,20 @@ std::pair<double, double> CyclotomicField::to_interval(const std::vector<mpq_cla
   if (all_zero(a)) return {0.0, 0.0};
   // The filter's enclosure, one rounding step wider on each side (its bound already has a wide
   // margin over the true error), when it decides the sign; lazy kernels call this per node.
+  // Where the power basis cancels, the double filter's enclosure is wide (up to 2^-10 relative
+  // for a cosine of K_128) and every interval computed from it is too, so lazy values would be
+  // evaluated exactly just to round them; double-double narrows it to a few units in the last
+  // place at the cost of d fma.
+  const auto enclosure = [](double v, double b) {
+    return std::pair{std::nextafter(v - b, -HUGE_VAL), std::nextafter(v + b, HUGE_VAL)};
+  };
   double sum = 0, bound = 0;
-  if (filtered_value(a, sum, bound) && (sum > bound || sum < -bound))
-    return {std::nextafter(sum - bound, -HUGE_VAL), std::nextafter(sum + bound, HUGE_VAL)};
+  const bool filtered = filtered_value(a, sum, bound) && (sum > bound || sum < -bound);
+  if (filtered && bound <= 0x1p-50 * std::fabs(sum)) return enclosure(sum, bound);
+  double value = 0, value_bound = 0;
+  if (double_double_value(a, value, value_bound) && (value > value_bound || value < -value_bound))
+    if (!filtered || value_bound < bound) return enclosure(value, value_bound);
+  if (filtered) return enclosure(sum, bound);
   for (long prec = start_precision;; prec *= 2) {
     auto pw = powers(prec);
     Interval sum(prec);

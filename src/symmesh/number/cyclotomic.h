@@ -91,6 +91,12 @@ public:
   /// Σ a_i ĉ^i in double and a bound on its distance to the exact value; false when a
   /// coefficient is outside the double range the bound assumes.
   bool filtered_value(const std::vector<mpq_class>& a, double& value, double& bound) const;
+  /// Σ a_i c^i in double-double (error-free products and sums, c^i to about 2^-106) and a bound
+  /// on its distance to the exact value: a narrow enclosure where the power basis cancels (a
+  /// cosine of K_128 in this basis has Σ|a_i c^i| ≈ 2^43 times its value). false when a
+  /// coefficient's numerator or denominator has more than 53 bits or a magnitude leaves the range
+  /// the bound assumes.
+  bool double_double_value(const std::vector<mpq_class>& a, double& value, double& bound) const;
   /// Sign by a double evaluation with a rigorous error bound; 0 when that bound does not decide.
   int filtered_sign(const std::vector<mpq_class>& a) const;
   /// filtered_sign of a − b (same degree), without forming a − b.
@@ -129,7 +135,8 @@ private:
   mutable std::vector<std::shared_ptr<const Powers>> powers_;
   mutable std::vector<std::vector<mpq_class>> two_cos_; // 2cos(2πj/m), j = 0..
   std::vector<double> c_pow_double_;                    // c^i to nearest double, for filtered_sign
-  bool small_reduction_ = false; // reduction table entries and denominator below 2^40
+  std::vector<double> c_pow_low_; // c^i − c_pow_double_[i] to nearest: c^i in double-double
+  bool small_reduction_ = false;  // reduction table entries and denominator below 2^40
   std::vector<std::vector<long long>> reduction_small_;
 };
 
