@@ -691,12 +691,11 @@ int CyclotomicField::sign(const std::vector<mpq_class>& a) const {
 
 std::pair<double, double> CyclotomicField::to_interval(const std::vector<mpq_class>& a) const {
   if (all_zero(a)) return {0.0, 0.0};
-  // The filter's enclosure, one rounding step wider on each side (its bound already has a wide
-  // margin over the true error), when it decides the sign; lazy kernels call this per node.
-  // Where the power basis cancels, the double filter's enclosure is wide (up to 2^-10 relative
-  // for a cosine of K_128) and every interval computed from it is too, so lazy values would be
-  // evaluated exactly just to round them; double-double narrows it to a few units in the last
-  // place at the cost of d fma.
+  // Lazy kernels call this per node. The filter's enclosure (one rounding step wider on each
+  // side; its bound has a wide margin over the true error) when it is narrow; where the power
+  // basis cancels it is wide (up to 2^-10 relative for a cosine of K_128), and so is every
+  // interval computed from it, sending predicates to exact evaluation: then the double-double
+  // enclosure, a few units in the last place at the cost of d fma, if it is the narrower.
   const auto enclosure = [](double v, double b) {
     return std::pair{std::nextafter(v - b, -HUGE_VAL), std::nextafter(v + b, HUGE_VAL)};
   };
