@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -58,6 +59,32 @@ constexpr double kTetrahedraPerVolumeBound = 2.0;
 /// of every edge face and the triangles of the surface meshes of the 2-faces. TetGen gets the
 /// points rounded once from their exact values; conformity never depends on the rounding, the
 /// SVB identifies points by index.
+/// A face's plane in exact coordinates: its points are p0 + s·u + t·v. A surface mesh carried by
+/// a rigid map keeps its (s, t) and takes the image frame (map(p0), A·u, A·v), so that a mapping
+/// between two carried faces is checked on the frames once and on the (s, t) lists, not point by
+/// point (spec/lemmas.md#lemma-4-2-surface-meshes).
+template <class FT>
+struct FacePlane {
+  P3<FT> p0, u, v;
+  P3<FT> at(const std::array<FT, 2>& st) const {
+    return p0 + core::scaled<FT, 3>(u, st[0]) + core::scaled<FT, 3>(v, st[1]);
+  }
+};
+
+/// The linear part of m applied to a vector.
+template <class FT>
+P3<FT> linear_image(const core::RigidTransformation<FT, 3>& m, const P3<FT>& u) {
+  P3<FT> r;
+  const auto& a = m.matrix();
+  for (int i = 0; i < 3; ++i) r[i] = a[i][0] * u[0] + a[i][1] * u[1] + a[i][2] * u[2];
+  return r;
+}
+
+template <class FT>
+FacePlane<FT> image_plane(const core::RigidTransformation<FT, 3>& m, const FacePlane<FT>& f) {
+  return {m(f.p0), linear_image(m, f.u), linear_image(m, f.v)};
+}
+
 template <class FT>
 struct SurfaceBoundary {
   std::vector<P3<FT>> exact;
@@ -65,6 +92,10 @@ struct SurfaceBoundary {
   std::vector<std::size_t> facet_first, facet_count; ///< per subdivision face: interior points
   /// per subdivision face: meshed symmetrically, so a mapping may permute its interior points
   std::vector<bool> facet_symmetric;
+  /// per subdivision face: set when its interior points are exact[facet_first + k] =
+  /// facet_plane->at((*facet_st)[k]) (surface_meshes writes both; nothing else writes either)
+  std::vector<std::optional<FacePlane<FT>>> facet_plane;
+  std::vector<std::shared_ptr<const std::vector<std::array<FT, 2>>>> facet_st;
   std::vector<std::array<std::size_t, 3>> triangles;
   std::vector<std::size_t> triangle_face;                      ///< the 2-face each triangle lies in
   std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>> id_of; ///< vertices and line points
@@ -80,6 +111,8 @@ SurfaceBoundary<FT> line_meshes_3(const core::BoundarySubdivision<FT, 3>& sd, co
   tb.facet_first.assign(sd.faces.size(), 0);
   tb.facet_count.assign(sd.faces.size(), 0);
   tb.facet_symmetric.assign(sd.faces.size(), false);
+  tb.facet_plane.assign(sd.faces.size(), std::nullopt);
+  tb.facet_st.assign(sd.faces.size(), nullptr);
   for (std::size_t f = 0; f < sd.faces.size(); ++f) {
     const auto& face = sd.faces[f];
     if (face.dimension != 1) continue;
@@ -117,6 +150,9 @@ struct FacetMesh {
   std::vector<std::size_t> boundary_ids;
   std::vector<P3<FT>> interior;
   std::vector<std::array<std::size_t, 3>> triangles; ///< < boundary_ids.size(): boundary
+  /// when set, interior[k] = plane->at(st[k]) (mesh_facet; not the symmetric meshes)
+  std::optional<FacePlane<FT>> plane;
+  std::vector<std::array<FT, 2>> st;
 };
 
 /// An exact orthogonal frame of a face's plane, from its vertices (not its pieces, whose
@@ -132,10 +168,11 @@ struct FacetFrame {
     const P3<FT> d = x - p0;
     return {rounded(core::dot<FT, 3>(d, u)) / lu, rounded(core::dot<FT, 3>(d, v)) / lv};
   }
+  std::array<FT, 2> plane_coordinates(const std::array<double, 2>& q) const {
+    return {exact_from_double<FT>(q[0] / lu), exact_from_double<FT>(q[1] / lv)};
+  }
   P3<FT> from_plane(const std::array<double, 2>& q) const {
-    const FT s = exact_from_double<FT>(q[0] / lu);
-    const FT t = exact_from_double<FT>(q[1] / lv);
-    return p0 + core::scaled<FT, 3>(u, s) + core::scaled<FT, 3>(v, t);
+    return FacePlane<FT>{p0, u, v}.at(plane_coordinates(q));
   }
 };
 
@@ -190,8 +227,11 @@ FacetMesh<FT> mesh_facet(const core::BoundarySubdivision<FT, 3>& sd, const Surfa
   p.size = size;
   p.min_angle_deg = min_angle_deg;
   const auto m = mesh_domain_2(in, p);
-  for (std::size_t k = in.points.size(); k < m.points.size(); ++k)
-    out.interior.push_back(frame.from_plane(m.points[k]));
+  out.plane = FacePlane<FT>{frame.p0, frame.u, frame.v};
+  for (std::size_t k = in.points.size(); k < m.points.size(); ++k) {
+    out.st.push_back(frame.plane_coordinates(m.points[k]));
+    out.interior.push_back(out.plane->at(out.st.back()));
+  }
   out.triangles = m.triangles;
   return out;
 }
@@ -342,6 +382,7 @@ void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
                          ? mesh_facet(sds[t], boundaries[t], f, size, min_angle_deg)
                          : mesh_symmetric_facet(x, sds[t], boundaries[t], classes[k].first,
                                                 groups[k], h2, size, min_angle_deg);
+    const auto st = std::make_shared<const std::vector<std::array<FT, 2>>>(rep.st);
     for (const auto& g : classes[k].members) {
       auto& tb = boundaries[g.t];
       const auto& map = classes[k].comp.at(g);
@@ -356,9 +397,21 @@ void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
       tb.facet_first[g.f] = tb.exact.size();
       tb.facet_count[g.f] = rep.interior.size();
       tb.facet_symmetric[g.f] = !groups[k].is_trivial();
-      for (const auto& q : rep.interior) {
-        ids.push_back(tb.exact.size());
-        tb.exact.push_back(map(q));
+      if (rep.plane) {
+        // Carried in face coordinates: the image frame once, then each point from its (s, t) —
+        // the same exact value as map(q), and cheaper to evaluate (rational times K_m).
+        const auto& plane = tb.facet_plane[g.f].emplace(
+            map.is_identity() ? *rep.plane : image_plane(map, *rep.plane));
+        tb.facet_st[g.f] = st;
+        for (const auto& c : *st) {
+          ids.push_back(tb.exact.size());
+          tb.exact.push_back(plane.at(c));
+        }
+      } else {
+        for (const auto& q : rep.interior) {
+          ids.push_back(tb.exact.size());
+          tb.exact.push_back(map(q));
+        }
       }
       for (const auto& c : rep.triangles) {
         tb.triangles.push_back({ids[c[0]], ids[c[1]], ids[c[2]]});
@@ -387,7 +440,22 @@ void perturb_one_surface_mesh(const core::BoundaryPatchPartition<FT, 3>& bpp,
         const auto* at = std::find(c.begin(), c.end(), p);
         if (at == c.end()) continue;
         const std::size_t q = c[std::size_t(at - c.begin() + 1) % 3];
-        tb.exact[p] = tb.exact[p] + core::scaled<FT, 3>(tb.exact[q] - tb.exact[p], FT(1) / FT(16));
+        if (!tb.facet_plane[f]) {
+          tb.exact[p] =
+              tb.exact[p] + core::scaled<FT, 3>(tb.exact[q] - tb.exact[p], FT(1) / FT(16));
+          return;
+        }
+        // In face coordinates (the frame is orthogonal), so the face keeps its invariant
+        // exact = plane.at(st) and only this face's list changes.
+        const auto& plane = *tb.facet_plane[f];
+        const P3<FT> d = tb.exact[q] - plane.p0;
+        const std::array<FT, 2> sq{
+            core::dot<FT, 3>(d, plane.u) / core::dot<FT, 3>(plane.u, plane.u),
+            core::dot<FT, 3>(d, plane.v) / core::dot<FT, 3>(plane.v, plane.v)};
+        auto st = *tb.facet_st[f];
+        for (int i = 0; i < 2; ++i) st[0][i] = st[0][i] + (sq[i] - st[0][i]) / FT(16);
+        tb.exact[p] = plane.at(st[0]);
+        tb.facet_st[f] = std::make_shared<const std::vector<std::array<FT, 2>>>(std::move(st));
         return;
       }
     }
