@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -419,6 +421,104 @@ void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
       }
     }
   }
+}
+
+/// The double-double enclosures of a face frame's nine exact coordinates (rounding_plane).
+struct PlaneEnclosure {
+  std::array<std::array<double, 3>, 3> hi{}, lo{}, bound{}; ///< [p0, u, v][coordinate]
+  bool usable = false;
+};
+
+template <class FT>
+PlaneEnclosure plane_enclosure(const FacePlane<FT>& plane) {
+  PlaneEnclosure e;
+  if constexpr (std::is_same_v<FT, LazyCyclotomic>) {
+    const P3<FT>* parts[3] = {&plane.p0, &plane.u, &plane.v};
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 3; ++d)
+        CGAL::exact((*parts[k])[d]).double_double_enclosure(e.hi[k][d], e.lo[k][d], e.bound[k][d]);
+    e.usable = true;
+  }
+  return e;
+}
+
+/// The double nearest to x = p0 + s·u + t·v (one coordinate; s, t doubles) from the frame's
+/// double-double enclosures, or nullopt where that cannot be decided (x within the error bound of
+/// a midpoint between two doubles, or outside the normal range). s·hi is split exactly (fma) and
+/// the big parts summed exactly (TwoSum); the rest, a floating sum of seven small terms, and the
+/// enclosures' bounds give |x − (h + l)| <= B, and h is the nearest double when x lies strictly
+/// between the midpoints to h's neighbours. The same double as to_double of the exact value
+/// (correct rounding), at the cost of a few dozen flops instead of exact K_m arithmetic.
+inline std::optional<double> nearest_on_plane(const PlaneEnclosure& e, int d, double s, double t) {
+  constexpr double u = 0x1p-53;
+  const auto two_sum = [](double a, double b, double& sum, double& err) {
+    sum = a + b;
+    const double bb = sum - a;
+    err = (a - (sum - bb)) + (b - bb);
+  };
+  const double p1 = s * e.hi[1][d], e1 = std::fma(s, e.hi[1][d], -p1);
+  const double p2 = t * e.hi[2][d], e2 = std::fma(t, e.hi[2][d], -p2);
+  const double a1 = s * e.lo[1][d], a2 = t * e.lo[2][d];
+  double s1 = 0, r1 = 0, big = 0, r2 = 0;
+  two_sum(e.hi[0][d], p1, s1, r1);
+  two_sum(s1, p2, big, r2);
+  const double terms[7] = {e.lo[0][d], e1, e2, a1, a2, r1, r2};
+  double small = 0, magnitude = 0;
+  for (double x : terms) {
+    small += x;
+    magnitude += std::fabs(x);
+  }
+  // Bounds: the enclosures; a1, a2 rounded once (u each); the floating sum of 7 terms (6u·Σ);
+  // a generous factor 2 covers the roundings of this sum of positive terms.
+  const double bound =
+      2 * (e.bound[0][d] + std::fabs(s) * e.bound[1][d] + std::fabs(t) * e.bound[2][d] +
+           u * (std::fabs(a1) + std::fabs(a2)) + 6 * u * magnitude);
+  double h = 0, l = 0;
+  two_sum(big, small, h, l);
+  if (!(std::fabs(h) > 0x1p-1000 && std::fabs(h) < 0x1p1000) || !std::isfinite(bound))
+    return std::nullopt;
+  const double up = (std::nextafter(h, HUGE_VAL) - h) / 2;
+  const double down = (h - std::nextafter(h, -HUGE_VAL)) / 2;
+  if (std::nextafter(l + bound, HUGE_VAL) < up && std::nextafter(l - bound, -HUGE_VAL) > -down)
+    return h;
+  return std::nullopt;
+}
+
+/// Template t's boundary points rounded for TetGen: rounded() of each exact coordinate — the
+/// midpoint of its lazy interval when that is within 4 ulp, else the nearest double. For points
+/// stored in face coordinates over K_m the nearest double comes from nearest_on_plane where it
+/// decides (the same double, without exact K_m evaluation of each point).
+template <class FT>
+std::vector<std::array<double, 3>> rounded_boundary(const SurfaceBoundary<FT>& tb) {
+  std::vector<std::array<double, 3>> out(tb.exact.size());
+  std::vector<bool> done(tb.exact.size(), false);
+  for (std::size_t f = 0; f < tb.facet_plane.size(); ++f) {
+    if (!tb.facet_plane[f] || tb.facet_count[f] == 0) continue;
+    const auto e = plane_enclosure(*tb.facet_plane[f]);
+    if (!e.usable) continue;
+    for (std::size_t k = 0; k < tb.facet_count[f]; ++k) {
+      const std::size_t id = tb.facet_first[f] + k;
+      const auto& st = (*tb.facet_st[f])[k];
+      const auto [s_lo, s_hi] = CGAL::to_interval(st[0]);
+      const auto [t_lo, t_hi] = CGAL::to_interval(st[1]);
+      for (int d = 0; d < 3; ++d) {
+        const FT& x = tb.exact[id][d];
+        const auto [lo, hi] = CGAL::to_interval(x);
+        std::optional<double> v;
+        if (hi - lo <=
+            4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
+          v = lo + (hi - lo) / 2; // rounded()'s first case, unchanged
+        else if (s_lo == s_hi && t_lo == t_hi)
+          v = nearest_on_plane(e, d, s_lo, t_lo);
+        out[id][d] = v ? *v : rounded(x);
+      }
+      done[id] = true;
+    }
+  }
+  for (std::size_t id = 0; id < tb.exact.size(); ++id)
+    if (!done[id])
+      out[id] = {rounded(tb.exact[id][0]), rounded(tb.exact[id][1]), rounded(tb.exact[id][2])};
+  return out;
 }
 
 /// GenerationOptions::perturb_one_surface_mesh: the first interior surface-mesh vertex of the first

@@ -27,8 +27,7 @@ void mesh_templates_3(const core::TemplatedStructure<FT, 3>& x,
   tm.point_dimension = 3;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     SurfaceInput s;
-    for (const auto& p : boundaries[i].exact)
-      s.points.push_back({rounded(p[0]), rounded(p[1]), rounded(p[2])});
+    s.points = rounded_boundary(boundaries[i]);
     s.triangles = boundaries[i].triangles;
     TetrahedralMeshingParameters p;
     p.size = o.size;

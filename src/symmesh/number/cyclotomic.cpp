@@ -715,6 +715,34 @@ std::pair<double, double> CyclotomicField::to_interval(const std::vector<mpq_cla
   }
 }
 
+namespace {
+/// hi + lo ± bound from an enclosure [x.lo, x.hi] at `prec` bits: hi = RN(x.lo), lo = RN(x.lo −
+/// hi) (exact in MPFR: x.lo − hi has at most prec bits), bound = |x.lo − hi − lo| + (x.hi − x.lo),
+/// rounded up.
+void split_enclosure(const Interval& x, mpfr_prec_t prec, double& hi, double& lo, double& bound) {
+  mpfr_t r;
+  mpfr_init2(r, prec);
+  hi = mpfr_get_d(x.lo, MPFR_RNDN);
+  mpfr_sub_d(r, x.lo, hi, MPFR_RNDN);
+  lo = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_sub_d(r, r, lo, MPFR_RNDU);
+  mpfr_abs(r, r, MPFR_RNDU);
+  const double rest = mpfr_get_d(r, MPFR_RNDU);
+  mpfr_sub(r, x.hi, x.lo, MPFR_RNDU);
+  bound = std::nextafter(rest + mpfr_get_d(r, MPFR_RNDU), HUGE_VAL);
+  mpfr_clear(r);
+}
+} // namespace
+
+void CyclotomicField::double_double_enclosure(const std::vector<mpq_class>& a, double& hi,
+                                              double& lo, double& bound) const {
+  constexpr long prec = 256;
+  const auto pw = powers(prec);
+  Interval sum(prec);
+  evaluate(sum, a, &pw->c_pow, prec);
+  split_enclosure(sum, prec, hi, lo, bound);
+}
+
 double CyclotomicField::to_double(const std::vector<mpq_class>& a) const {
   if (all_zero(a)) return 0.0;
   for (long prec = start_precision;; prec *= 2) {
@@ -771,6 +799,15 @@ double Cyclotomic::to_double() const {
     return r;
   }
   return field_->to_double(coefficients_);
+}
+
+void Cyclotomic::double_double_enclosure(double& hi, double& lo, double& bound) const {
+  if (field_) return field_->double_double_enclosure(coefficients_, hi, lo, bound);
+  constexpr long prec = 256;
+  Interval x(prec);
+  mpfr_set_q(x.lo, coefficients_[0].get_mpq_t(), MPFR_RNDD);
+  mpfr_set_q(x.hi, coefficients_[0].get_mpq_t(), MPFR_RNDU);
+  split_enclosure(x, prec, hi, lo, bound);
 }
 
 std::pair<double, double> Cyclotomic::to_interval() const {

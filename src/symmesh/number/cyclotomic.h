@@ -97,6 +97,11 @@ public:
   /// coefficient's numerator or denominator has more than 53 bits or a magnitude leaves the range
   /// the bound assumes.
   bool double_double_value(const std::vector<mpq_class>& a, double& value, double& bound) const;
+  /// hi + lo with |hi + lo − Σ a_i c^i| <= bound ≈ 2^-106 |value| (MPFR at 256 bits; hi the
+  /// value rounded, lo the rest rounded): enough to round an affine combination of such values
+  /// with double coefficients correctly without evaluating it exactly (gen/surface_meshes_3d.h).
+  void double_double_enclosure(const std::vector<mpq_class>& a, double& hi, double& lo,
+                               double& bound) const;
   /// Sign by a double evaluation with a rigorous error bound; 0 when that bound does not decide.
   int filtered_sign(const std::vector<mpq_class>& a) const;
   /// filtered_sign of a − b (same degree), without forming a − b.
@@ -206,6 +211,9 @@ public:
   double to_double() const;
   /// Output only: doubles lo <= value <= hi.
   std::pair<double, double> to_interval() const;
+  /// Output only: hi + lo within `bound` (about 2^-106 relative) of the value
+  /// (CyclotomicField::double_double_enclosure; rationals likewise).
+  void double_double_enclosure(double& hi, double& lo, double& bound) const;
 
   Cyclotomic operator-() const;
   Cyclotomic& operator+=(const Cyclotomic& o);
