@@ -99,23 +99,45 @@ core::Lemma42Verdict certify_3(const core::TemplatedStructure<FT, 3>& x,
   return core::check_interface_conformity(b, core::apply_template(b));
 }
 
-/// The interior surface-mesh points of mapping `letter`'s domain faces whose images are decided by
-/// frames: a non-symmetric face f stored in face coordinates (exact = P_f(s, t) = p0 + s·u + t·v)
-/// whose image face g is too, paired index for index. The map sends P_f(s, t) to
-/// P_{map(f)}(s, t) (it is affine), so when it sends f's frame onto g's and the (s, t) lists are
-/// equal, it sends every such point onto its partner — three exact point comparisons per face
-/// instead of one per point. A failure is written to v.
+/// The boundary points of mapping `letter`'s domain whose images follow from other checks, with
+/// the image each must be paired with (npos: check the point itself).
+/// - Interior points of a non-symmetric face f stored in face coordinates (exact = P_f(s, t) =
+///   p0 + s·u + t·v) whose image face g is too: the map is affine, so it sends P_f(s, t) to
+///   P_{map(f)}(s, t); when it sends f's frame onto g's (three exact point comparisons, done
+///   here) and the (s, t) lists agree, point k of f goes to point k of g.
+/// - Line-mesh points of an edge face whose ends the SVB pairs with the ends of the image edge
+///   (exact = a + (b − a)·k/n): point k goes to point k of the image line, or n − k when the
+///   ends are swapped, once the end pairs themselves are checked (they are, point by point).
+/// A frame or (s, t) mismatch is written to v.
 template <class FT>
-std::vector<bool>
-frame_checked_points(const core::BoundaryPatchPartition<FT, 3>& bpp, std::size_t letter,
-                     const std::vector<SurfaceBoundary<FT>>& boundaries, core::Lemma42Verdict& v) {
+std::vector<std::size_t> implied_images(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                                        std::size_t letter,
+                                        const std::vector<SurfaceBoundary<FT>>& boundaries,
+                                        const SvbPairs& pairs, core::Lemma42Verdict& v) {
+  constexpr std::size_t none = std::size_t(-1);
   const auto& m = bpp.mappings[letter];
+  const auto& sd = bpp.subdivisions[m.from_template()];
   const auto& from = boundaries[m.from_template()];
   const auto& to = boundaries[m.to_template()];
-  std::vector<bool> checked(from.exact.size(), false);
+  std::vector<std::size_t> expected(from.exact.size(), none);
+  std::vector<std::size_t> vertex_image(sd.points.size(), none);
+  for (auto [a, b] : pairs)
+    if (std::size_t(a) < vertex_image.size()) vertex_image[std::size_t(a)] = std::size_t(b);
   for (auto [f, g] : bpp.letter_action[letter]) {
-    if (bpp.subdivisions[m.from_template()].faces[f].dimension != 2 || from.facet_symmetric[f] ||
-        to.facet_symmetric[g] || !from.facet_plane[f] || !to.facet_plane[g])
+    const int dim = sd.faces[f].dimension;
+    if (dim == 1) {
+      const auto& lf = from.lines[f];
+      const auto& lg = to.lines[g];
+      if (lf.n != lg.n) continue;
+      const bool forward = vertex_image[lf.a] == lg.a && vertex_image[lf.b] == lg.b;
+      const bool backward = vertex_image[lf.a] == lg.b && vertex_image[lf.b] == lg.a;
+      if (forward == backward) continue; // unpaired ends (or a degenerate edge): point by point
+      for (std::size_t k = 1; k < lf.n; ++k)
+        expected[lf.first + k - 1] = lg.first + (forward ? k - 1 : lf.n - k - 1);
+      continue;
+    }
+    if (dim != 2 || from.facet_symmetric[f] || to.facet_symmetric[g] || !from.facet_plane[f] ||
+        !to.facet_plane[g])
       continue;
     const auto image = image_plane(m.map, *from.facet_plane[f]);
     const auto& target = *to.facet_plane[g];
@@ -125,11 +147,12 @@ frame_checked_points(const core::BoundaryPatchPartition<FT, 3>& bpp, std::size_t
       v.detail = "the mapping " + m.name() + " does not send the surface-mesh points of face " +
                  std::to_string(f) + " onto those of face " + std::to_string(g) +
                  (same_st ? " (their frames differ)" : " (their face coordinates differ)");
-      return checked;
+      return expected;
     }
-    for (std::size_t k = 0; k < from.facet_count[f]; ++k) checked[from.facet_first[f] + k] = true;
+    for (std::size_t k = 0; k < from.facet_count[f]; ++k)
+      expected[from.facet_first[f] + k] = to.facet_first[g] + k;
   }
-  return checked;
+  return expected;
 }
 
 /// Lemma 4.2 mapping by mapping (spec/lemmas.md#lemma-4-2-surface-meshes): every non-trivial
@@ -162,12 +185,19 @@ core::Lemma42Verdict certify_by_mappings(const core::BoundaryPatchPartition<FT, 
     ++v.pairs_checked;
     const std::size_t j = m.from_template(), i = m.to_template();
     const auto pairs = mapping_pairs_3(bpp, l, boundaries);
-    const auto by_frames = frame_checked_points(bpp, l, boundaries, v);
+    const auto implied = implied_images(bpp, l, boundaries, pairs, v);
     std::map<std::size_t, std::size_t> image;
     for (auto [a, b] : pairs) {
       image.emplace(std::size_t(a), std::size_t(b));
       if (!v.holds) break;
-      if (by_frames[std::size_t(a)]) continue;
+      if (const std::size_t e = implied[std::size_t(a)]; e != std::size_t(-1)) {
+        if (e == std::size_t(b)) continue;
+        v.holds = false;
+        v.detail = "the SVB pairs boundary point " + std::to_string(a) + " with " +
+                   std::to_string(b) + " across the mapping " + m.name() +
+                   ", but its line or face coordinates make its image " + std::to_string(e);
+        break;
+      }
       if (m.map(boundaries[j].exact[std::size_t(a)]) != boundaries[i].exact[std::size_t(b)]) {
         v.holds = false;
         v.detail = "the mapping " + m.name() + " does not send boundary vertex " +

@@ -90,7 +90,9 @@ FacePlane<FT> image_plane(const core::RigidTransformation<FT, 3>& m, const FaceP
 template <class FT>
 struct SurfaceBoundary {
   std::vector<P3<FT>> exact;
-  std::vector<FaceLine> lines;                       ///< per subdivision face (n = 0: not an edge)
+  /// per subdivision face (n = 0: not an edge); its points are exact[first + k − 1] =
+  /// line_point(a, b, k, n), written by line_meshes_3 only (the certificate relies on it)
+  std::vector<FaceLine> lines;
   std::vector<std::size_t> facet_first, facet_count; ///< per subdivision face: interior points
   /// per subdivision face: meshed symmetrically, so a mapping may permute its interior points
   std::vector<bool> facet_symmetric;
