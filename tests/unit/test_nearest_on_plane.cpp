@@ -70,28 +70,42 @@ TEST(NearestOnPlane, IsTheNearestDoubleOfTheExactValue) {
 }
 
 TEST(NearestOnPlane, RefusesAValueHalfwayBetweenTwoDoubles) {
-  // 1 + 2^-53 is the midpoint of 1 and its successor: no enclosure decides which is nearer, so
-  // the caller must evaluate exactly (the dropped hypothesis: "x is not within the bound of a
-  // midpoint"). Just off the midpoint it decides, and correctly.
+  // A midpoint between two neighbouring doubles (above and below a power of two, where the gaps
+  // differ, and negative): no enclosure decides which is nearer, so the caller must evaluate
+  // exactly (the dropped hypothesis: "x is not within the bound of a midpoint"). 2^-70 of the
+  // value off the midpoint — far inside half an ulp, far outside the 2^-100 bound — it decides,
+  // and gives the correctly rounded double. The value comes either as p0 or as s·u.
   const auto f = CyclotomicField::get(64);
-  const mpq_class half_ulp = mpq_class(1) / (mpq_class(mpz_class(1) << 53));
-  for (int side : {-1, 0, 1}) {
-    const mpq_class x0 = 1 + half_ulp + side * half_ulp / 1024;
-    gen::surface3::FacePlane<LazyCyclotomic> plane;
-    plane.p0 = P{{lazy(x0), LazyCyclotomic(f->cos_2pi(1, 64)), lazy(0)}};
-    plane.u = P{{lazy(0), lazy(1), lazy(0)}};
-    plane.v = P{{lazy(0), lazy(0), lazy(1)}};
-    const auto e = gen::surface3::plane_enclosure(plane);
-    const auto v = gen::surface3::nearest_on_plane(e, 0, 0.5, 0.25);
-    if (side == 0) {
-      EXPECT_FALSE(v.has_value()) << *v;
-    } else {
-      ASSERT_TRUE(v.has_value()) << side;
-      EXPECT_EQ(*v, side < 0 ? 1.0 : std::nextafter(1.0, 2.0));
-    }
-    // The y coordinate, cos(2π/64) + 0.5, is far from any midpoint.
-    const auto y = gen::surface3::nearest_on_plane(e, 1, 0.5, 0.25);
-    ASSERT_TRUE(y.has_value());
-    EXPECT_EQ(*y, (f->cos_2pi(1, 64) + Cyclotomic(mpq_class(1, 2))).to_double());
-  }
+  const auto pow2 = [](int e) {
+    return e >= 0 ? mpq_class(mpz_class(1) << e) : mpq_class(1) / mpq_class(mpz_class(1) << -e);
+  };
+  const std::vector<mpq_class> midpoints = {1 + pow2(-53), 1 - pow2(-54), -(1 + pow2(-53)),
+                                            pow2(10) * (1 - pow2(-54)),
+                                            -pow2(-3) * (1 - pow2(-54))};
+  int decided = 0;
+  for (const auto& mid : midpoints)
+    for (int side : {-1, 0, 1})
+      for (bool as_product : {false, true}) {
+        const mpq_class x0 = mid + side * abs(mid) * pow2(-70);
+        gen::surface3::FacePlane<LazyCyclotomic> plane;
+        plane.p0 =
+            P{{lazy(as_product ? mpq_class(0) : x0), LazyCyclotomic(f->cos_2pi(1, 64)), lazy(0)}};
+        plane.u = P{{lazy(as_product ? mpq_class(2 * x0) : mpq_class(0)), lazy(1), lazy(0)}};
+        plane.v = P{{lazy(0), lazy(0), lazy(1)}};
+        const auto e = gen::surface3::plane_enclosure(plane);
+        const auto v = gen::surface3::nearest_on_plane(e, 0, 0.5, 0.25);
+        if (side == 0) {
+          EXPECT_FALSE(v.has_value()) << mid << ": " << *v;
+          continue;
+        }
+        ASSERT_TRUE(v.has_value()) << mid << ", side " << side;
+        EXPECT_EQ(*v, Cyclotomic(x0).to_double()) << mid << ", side " << side;
+        EXPECT_NE(*v, Cyclotomic(mid - side * abs(mid) * pow2(-70)).to_double()) << mid;
+        ++decided;
+        // The y coordinate, cos(2π/64) + 0.5, is far from any midpoint.
+        const auto y = gen::surface3::nearest_on_plane(e, 1, 0.5, 0.25);
+        ASSERT_TRUE(y.has_value());
+        EXPECT_EQ(*y, (f->cos_2pi(1, 64) + Cyclotomic(mpq_class(1, 2))).to_double());
+      }
+  EXPECT_EQ(decided, 20);
 }

@@ -103,8 +103,9 @@ core::Lemma42Verdict certify_3(const core::TemplatedStructure<FT, 3>& x,
 /// the image each must be paired with (npos: check the point itself).
 /// - Interior points of a non-symmetric face f stored in face coordinates (exact = P_f(s, t) =
 ///   p0 + s·u + t·v) whose image face g is too: the map is affine, so it sends P_f(s, t) to
-///   P_{map(f)}(s, t); when it sends f's frame onto g's (three exact point comparisons, done
-///   here) and the (s, t) lists agree, point k of f goes to point k of g.
+///   P_{map(f)}(s, t); when it sends p0, p0 + u, p0 + v of f's frame onto those of g's (three
+///   exact point comparisons, done here) and the (s, t) lists agree, point k of f goes to point
+///   k of g. This relies on exact = FacePlane::at(s, t) (SurfaceBoundary::facet_plane).
 /// - Line-mesh points of an edge face whose ends the SVB pairs with the ends of the image edge
 ///   (exact = a + (b − a)·k/n): point k goes to point k of the image line, or n − k when the
 ///   ends are swapped, once the end pairs themselves are checked (they are, point by point).
@@ -139,10 +140,15 @@ std::vector<std::size_t> implied_images(const core::BoundaryPatchPartition<FT, 3
     if (dim != 2 || from.facet_symmetric[f] || to.facet_symmetric[g] || !from.facet_plane[f] ||
         !to.facet_plane[g])
       continue;
-    const auto image = image_plane(m.map, *from.facet_plane[f]);
+    // The frame's three points mapped by m itself (not by image_plane, which carried the copies):
+    // m sends p0, p0 + u, p0 + v onto the target's, hence p0 + s·u + t·v onto its point (s, t).
+    const auto& source = *from.facet_plane[f];
     const auto& target = *to.facet_plane[g];
+    const bool same_frame = m.map(source.p0) == target.p0 &&
+                            m.map(source.p0 + source.u) == target.p0 + target.u &&
+                            m.map(source.p0 + source.v) == target.p0 + target.v;
     const bool same_st = from.facet_st[f] == to.facet_st[g] || *from.facet_st[f] == *to.facet_st[g];
-    if (image.p0 != target.p0 || image.u != target.u || image.v != target.v || !same_st) {
+    if (!same_frame || !same_st) {
       v.holds = false;
       v.detail = "the mapping " + m.name() + " does not send the surface-mesh points of face " +
                  std::to_string(f) + " onto those of face " + std::to_string(g) +

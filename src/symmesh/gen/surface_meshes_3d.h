@@ -56,11 +56,6 @@ P3<FT> line_point(const P3<FT>& a, const P3<FT>& b, std::size_t k, std::size_t n
 /// (spec/generation.md#cell-estimate).
 constexpr double kTetrahedraPerVolumeBound = 2.0;
 
-/// Template t's boundary mesh: every boundary point exactly in local ids (subdivision points,
-/// then the interior points of each line mesh, then those of each surface mesh), the line mesh
-/// of every edge face and the triangles of the surface meshes of the 2-faces. TetGen gets the
-/// points rounded once from their exact values; conformity never depends on the rounding, the
-/// SVB identifies points by index.
 /// A face's plane in exact coordinates: its points are p0 + s·u + t·v. A surface mesh carried by
 /// a rigid map keeps its (s, t) and takes the image frame (map(p0), A·u, A·v), so that a mapping
 /// between two carried faces is checked on the frames once and on the (s, t) lists, not point by
@@ -87,6 +82,11 @@ FacePlane<FT> image_plane(const core::RigidTransformation<FT, 3>& m, const FaceP
   return {m(f.p0), linear_image(m, f.u), linear_image(m, f.v)};
 }
 
+/// Template t's boundary mesh: every boundary point exactly in local ids (subdivision points,
+/// then the interior points of each line mesh, then those of each surface mesh), the line mesh
+/// of every edge face and the triangles of the surface meshes of the 2-faces. TetGen gets the
+/// points rounded once from their exact values; conformity never depends on the rounding, the
+/// SVB identifies points by index.
 template <class FT>
 struct SurfaceBoundary {
   std::vector<P3<FT>> exact;
@@ -97,7 +97,9 @@ struct SurfaceBoundary {
   /// per subdivision face: meshed symmetrically, so a mapping may permute its interior points
   std::vector<bool> facet_symmetric;
   /// per subdivision face: set when its interior points are exact[facet_first + k] =
-  /// facet_plane->at((*facet_st)[k]) (surface_meshes writes both; nothing else writes either)
+  /// facet_plane->at((*facet_st)[k]) — an invariant the certificate relies on and does not
+  /// re-check: surface_meshes writes all three, perturb_one_surface_mesh changes one (s, t) and
+  /// its point together, and nothing else writes them (the merge method leaves facet_plane unset)
   std::vector<std::optional<FacePlane<FT>>> facet_plane;
   std::vector<std::shared_ptr<const std::vector<std::array<FT, 2>>>> facet_st;
   std::vector<std::array<std::size_t, 3>> triangles;
@@ -425,7 +427,7 @@ void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
   }
 }
 
-/// The double-double enclosures of a face frame's nine exact coordinates (rounding_plane).
+/// The double-double enclosures of a face frame's nine exact coordinates (nearest_on_plane).
 struct PlaneEnclosure {
   std::array<std::array<double, 3>, 3> hi{}, lo{}, bound{}; ///< [p0, u, v][coordinate]
   bool usable = false;
@@ -436,10 +438,14 @@ PlaneEnclosure plane_enclosure(const FacePlane<FT>& plane) {
   PlaneEnclosure e;
   if constexpr (std::is_same_v<FT, LazyCyclotomic>) {
     const P3<FT>* parts[3] = {&plane.p0, &plane.u, &plane.v};
-    for (int k = 0; k < 3; ++k)
-      for (int d = 0; d < 3; ++d)
-        CGAL::exact((*parts[k])[d]).double_double_enclosure(e.hi[k][d], e.lo[k][d], e.bound[k][d]);
     e.usable = true;
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 3; ++d) {
+        CGAL::exact((*parts[k])[d]).double_double_enclosure(e.hi[k][d], e.lo[k][d], e.bound[k][d]);
+        // Far from underflow and overflow, so that the products below stay normal.
+        const double a = std::fabs(e.hi[k][d]);
+        if (a != 0 && !(a > 0x1p-900 && a < 0x1p900)) e.usable = false;
+      }
   }
   return e;
 }
@@ -450,9 +456,13 @@ PlaneEnclosure plane_enclosure(const FacePlane<FT>& plane) {
 /// the big parts summed exactly (TwoSum); the rest, a floating sum of seven small terms, and the
 /// enclosures' bounds give |x − (h + l)| <= B, and h is the nearest double when x lies strictly
 /// between the midpoints to h's neighbours. The same double as to_double of the exact value
-/// (correct rounding), at the cost of a few dozen flops instead of exact K_m arithmetic.
+/// (correct rounding), at the cost of a few dozen flops instead of exact K_m arithmetic. The
+/// error-free steps need every product and sum rounded on its own: symmesh_gen and the unit tests
+/// are compiled with -ffp-contract=off (CMakeLists.txt), so no fma is fused into them.
 inline std::optional<double> nearest_on_plane(const PlaneEnclosure& e, int d, double s, double t) {
   constexpr double u = 0x1p-53;
+  for (double c : {s, t})
+    if (c != 0 && !(std::fabs(c) > 0x1p-100 && std::fabs(c) < 0x1p100)) return std::nullopt;
   const auto two_sum = [](double a, double b, double& sum, double& err) {
     sum = a + b;
     const double bb = sum - a;
