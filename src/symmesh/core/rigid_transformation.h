@@ -117,6 +117,17 @@ public:
     return r;
   }
 
+  /// A·u: the linear part applied to a vector (the image of a direction).
+  Vec linear(const Vec& u) const {
+    Vec r;
+    for (int i = 0; i < D; ++i) {
+      FT s = a_[i][0] * u[0];
+      for (int j = 1; j < D; ++j) s += a_[i][j] * u[j];
+      r[i] = s;
+    }
+    return r;
+  }
+
   /// (this ∘ other)(x) = this(other(x)).
   RigidTransformation operator*(const RigidTransformation& o) const {
     RigidTransformation t;

@@ -24,16 +24,6 @@
 namespace symmesh::core {
 
 namespace detail {
-template <class FT, int D>
-Point<FT, D> linear_image(const RigidTransformation<FT, D>& t, const Point<FT, D>& u) {
-  Point<FT, D> r;
-  for (int i = 0; i < D; ++i) {
-    r[i] = FT(0);
-    for (int j = 0; j < D; ++j) r[i] += t.matrix()[i][j] * u[j];
-  }
-  return r;
-}
-
 /// The points of copy 0 of every template, T_{i,0}(p).
 template <class FT, int D>
 std::vector<Point<FT, D>> copy_zero_points(const TemplatedStructure<FT, D>& x) {
@@ -127,7 +117,7 @@ bool turns_by_one_nth(const RotationalSlice<FT, D>& s, std::size_t n) {
   const auto n1 = s.n1(), n2 = s.n2();
   auto w = s.start;
   for (std::size_t k = 1; k < n; ++k) {
-    w = linear_image(s.rotation, w);
+    w = s.rotation.linear(w);
     if (w == s.start) return false;
     if (k >= 2 && dot<FT, D>(w, n1) > FT(0) && dot<FT, D>(w, n2) > FT(0)) return false;
   }

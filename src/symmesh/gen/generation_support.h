@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include <gmpxx.h>
@@ -44,15 +45,23 @@ FT exact_from_double(double v) {
     return FT(number::Cyclotomic(q));
 }
 
+/// rounded()'s first case: the midpoint of v's certified interval when that is within 4 units
+/// in the last place, else nothing (the caller then finds the double nearest to the exact value).
+template <class FT>
+std::optional<double> narrow_midpoint(const FT& v) {
+  const auto [lo, hi] = CGAL::to_interval(v);
+  if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
+    return lo + (hi - lo) / 2;
+  return std::nullopt;
+}
+
 /// v within 4 units in the last place: the midpoint of its certified interval when that is so
 /// narrow, else the double nearest to its exact value. (CGAL's to_double of a lazy number
 /// returns the midpoint as soon as the interval is within 1e-5 relative, which left K_128 output
 /// vertices 1e-7 off.)
 template <class FT>
 double rounded(const FT& v) {
-  const auto [lo, hi] = CGAL::to_interval(v);
-  if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
-    return lo + (hi - lo) / 2;
+  if (const auto m = narrow_midpoint(v)) return *m;
   return CGAL::to_double(CGAL::exact(v));
 }
 

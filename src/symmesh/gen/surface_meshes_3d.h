@@ -11,6 +11,7 @@
 #include "symmesh/gen/symmetric_surface_mesh.h"
 #include "symmesh/gen/symmetry_copies.h"
 #include "symmesh/gen/triangle_mesher.h"
+#include "symmesh/number/error_free.h"
 
 #include <algorithm>
 #include <array>
@@ -68,18 +69,9 @@ struct FacePlane {
   }
 };
 
-/// The linear part of m applied to a vector.
-template <class FT>
-P3<FT> linear_image(const core::RigidTransformation<FT, 3>& m, const P3<FT>& u) {
-  P3<FT> r;
-  const auto& a = m.matrix();
-  for (int i = 0; i < 3; ++i) r[i] = a[i][0] * u[0] + a[i][1] * u[1] + a[i][2] * u[2];
-  return r;
-}
-
 template <class FT>
 FacePlane<FT> image_plane(const core::RigidTransformation<FT, 3>& m, const FacePlane<FT>& f) {
-  return {m(f.p0), linear_image(m, f.u), linear_image(m, f.v)};
+  return {m(f.p0), m.linear(f.u), m.linear(f.v)};
 }
 
 /// Template t's boundary mesh: every boundary point exactly in local ids (subdivision points,
@@ -463,11 +455,7 @@ inline std::optional<double> nearest_on_plane(const PlaneEnclosure& e, int d, do
   constexpr double u = 0x1p-53;
   for (double c : {s, t})
     if (c != 0 && !(std::fabs(c) > 0x1p-100 && std::fabs(c) < 0x1p100)) return std::nullopt;
-  const auto two_sum = [](double a, double b, double& sum, double& err) {
-    sum = a + b;
-    const double bb = sum - a;
-    err = (a - (sum - bb)) + (b - bb);
-  };
+  using number::two_sum;
   const double p1 = s * e.hi[1][d], e1 = std::fma(s, e.hi[1][d], -p1);
   const double p2 = t * e.hi[2][d], e2 = std::fma(t, e.hi[2][d], -p2);
   const double a1 = s * e.lo[1][d], a2 = t * e.lo[2][d];
@@ -515,14 +503,9 @@ std::vector<std::array<double, 3>> rounded_boundary(const SurfaceBoundary<FT>& t
       const auto [t_lo, t_hi] = CGAL::to_interval(st[1]);
       for (int d = 0; d < 3; ++d) {
         const FT& x = tb.exact[id][d];
-        const auto [lo, hi] = CGAL::to_interval(x);
-        std::optional<double> v;
-        if (hi - lo <=
-            4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
-          v = lo + (hi - lo) / 2; // rounded()'s first case, unchanged
-        else if (s_lo == s_hi && t_lo == t_hi)
-          v = nearest_on_plane(e, d, s_lo, t_lo);
-        out[id][d] = v ? *v : rounded(x);
+        auto v = support::narrow_midpoint(x); // rounded()'s first case, unchanged
+        if (!v && s_lo == s_hi && t_lo == t_hi) v = nearest_on_plane(e, d, s_lo, t_lo);
+        out[id][d] = v ? *v : CGAL::to_double(CGAL::exact(x));
       }
       done[id] = true;
     }

@@ -1,5 +1,6 @@
 // The real cyclotomic field K_m = Q(cos 2π/m): exact arithmetic, certified sign (MPFR).
 #include "symmesh/number/cyclotomic.h"
+#include "symmesh/number/error_free.h"
 
 #include <mpfr.h>
 
@@ -596,12 +597,6 @@ bool split_rational(const mpq_class& q, double& hi, double& lo) {
   return true;
 }
 
-/// s + t = a + b exactly (Knuth's TwoSum).
-void two_sum(double a, double b, double& s, double& t) {
-  s = a + b;
-  const double bb = s - a;
-  t = (a - (s - bb)) + (b - bb);
-}
 } // namespace
 
 bool CyclotomicField::double_double_value(const std::vector<mpq_class>& a, double& value,
