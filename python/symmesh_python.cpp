@@ -90,18 +90,19 @@ PYBIND11_MODULE(_symmesh, m) {
 
   py::class_<symmesh::Generation>(m, "Generation")
       .def(py::init([](const symmesh::Structure& s, double size, double min_angle,
-                       const std::string& method, double max_cells, bool progress) {
+                       const std::string& method, double max_cells, bool progress, bool repair) {
              symmesh::GenerateOptions o;
              o.size = size;
              o.min_angle = min_angle;
              o.method = method;
              o.max_cells = max_cells;
              o.progress = progress;
+             o.repair_outliers = repair;
              py::gil_scoped_release release;
              return symmesh::Generation(s, o);
            }),
            py::arg("structure"), py::arg("size"), py::arg("min_angle"), py::arg("method"),
-           py::arg("max_cells"), py::arg("progress"))
+           py::arg("max_cells"), py::arg("progress"), py::arg("repair") = true)
       .def_property_readonly("method", &symmesh::Generation::method)
       .def_property_readonly("dimension", &symmesh::Generation::dimension)
       .def_property_readonly("cell_count", &symmesh::Generation::cell_count)

@@ -172,11 +172,14 @@ class Generation:
                 f"{self.report['cells_templates']} template cells>")
 
 
-def generate(structure, size, min_angle=20.0, method="auto", max_cells=0, progress=False):
+def generate(structure, size, min_angle=20.0, method="auto", max_cells=0, progress=False,
+             repair=True):
     """`symmesh generate`: a templated mesh of a templated geometry (Algorithm 5.6 in 2D, 5.7 in
     3D, or a baseline), certified by Lemma 4.2. `structure` is a Structure or anything
-    read_structure takes. Raises InputError or CertificateError with the CLI's message."""
+    read_structure takes; repair=False is `--no-repair` (3D: TetGen's tetrahedra kept as they
+    are). Raises InputError or CertificateError with the CLI's message."""
     if not isinstance(structure, Structure):
         structure = read_structure(structure)
     return Generation(_symmesh.Generation(structure._handle, float(size), float(min_angle),
-                                          str(method), float(max_cells), bool(progress)))
+                                          str(method), float(max_cells), bool(progress),
+                                          bool(repair)))

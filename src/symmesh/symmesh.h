@@ -131,6 +131,7 @@ struct GenerateOptions {
                                ///< conventional, gmsh
   double max_cells = 0;        ///< refuse larger estimates; 0: memory / 250 bytes per cell
   bool progress = false;       ///< progress lines on stderr, as the CLI without --quiet
+  bool repair_outliers = true; ///< 3D: the outlier repair after TetGen (false: --no-repair)
 };
 
 /// File options of `generate -o` (spec/outputs.md#mesh-files).

@@ -118,6 +118,20 @@ $PY -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['method'] == '
 generate tsv8_bpp "$TMP/tsv8_input.json" "$TSV_VOLUME" "$TSV_SURFACE" bpp vtu
 cmp -s "$TMP/tsv8.vtu" "$TMP/tsv8_bpp.vtu" && pass "TSV: rotational and bpp write the same bytes" \
   || fail "TSV: rotational and bpp differ"
+# The outlier repair after TetGen (spec/generation.md#outlier-repair) is on by default and
+# reported; --no-repair keeps TetGen's tetrahedra, and the repaired mesh is no worse than them.
+if "$BIN" generate "$TMP/tsv8_input.json" --size 0.15 -o "$TMP/tsv8_plain.vtu" \
+    --report "$TMP/tsv8_plain.json" --quiet --no-repair; then
+  $PY -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); \
+o=a['outlier_repair']; qa=a['quality']; qb=b['quality']; \
+assert 'outlier_repair' not in b and o['template_cells_after'] < o['template_cells_before'] and \
+o['flips'] + o['moves'] > 0 and qa['min_dihedral_deg'] >= qb['min_dihedral_deg'] and \
+qa['max_radius_edge_ratio'] <= qb['max_radius_edge_ratio'] and \
+qa['below_dihedral_bound'] < qb['below_dihedral_bound'], (o, qa, qb)" \
+    "$TMP/tsv8.json" "$TMP/tsv8_plain.json" \
+    && pass "TSV: the outlier repair only improves TetGen's worst cells; --no-repair skips it" \
+    || fail "TSV: outlier repair report or quality"
+else fail "TSV: generate --no-repair failed"; fi
 
 # Every built-in 3D object (example --list, summary "3D ..."): auto (rotational) at a coarse
 # size, the same meshio checks with its own volume and boundary area.

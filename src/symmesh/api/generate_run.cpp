@@ -67,6 +67,7 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, D>& x, const
   g.size = o.size;
   g.min_angle_deg = o.min_angle;
   g.progress = o.progress;
+  g.repair_outliers = o.repair_outliers;
   const auto method = methods().at(o.method);
   if constexpr (D == 2)
     return gen::generate_triangle_mesh(x, method, g);
@@ -236,6 +237,12 @@ nlohmann::ordered_json generation_report(const gen::GenerationResult& r, const R
                     {"min_angle_histogram", q.histogram}};
   } else {
     j["quality"] = tetrahedron_quality_json(r.templated.templated);
+    if (o.repair_outliers && r.method != "gmsh")
+      j["outlier_repair"] = {{"template_cells_before", r.outliers_before},
+                             {"template_cells_after", r.outliers_after},
+                             {"flips", r.repair_flips},
+                             {"moves", r.repair_moves},
+                             {"seconds_within_template_meshing", r.timings.outlier_repair}};
   }
   j["lemma_4_2_holds"] = r.lemma_4_2_holds;
   if (r.method == "merge")

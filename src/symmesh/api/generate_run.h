@@ -35,7 +35,8 @@ private:
 struct RunOptions {
   std::string method = "auto"; ///< a name of `generate --method`
   double size = 0, min_angle = 20;
-  double max_cells = 0; ///< 0: the default from the machine's memory
+  double max_cells = 0;        ///< 0: the default from the machine's memory
+  bool repair_outliers = true; ///< 3D: the outlier repair after TetGen (generate --no-repair)
   mesh::Progress* progress = nullptr;
 };
 

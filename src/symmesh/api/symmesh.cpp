@@ -171,6 +171,7 @@ Generation::Generation(const Structure& structure, const GenerateOptions& option
   o.size = options.size;
   o.min_angle = options.min_angle;
   o.max_cells = options.max_cells;
+  o.repair_outliers = options.repair_outliers;
   std::unique_ptr<mesh::Progress> progress;
   if (options.progress) progress = std::make_unique<mesh::Progress>("symmesh generate", std::cerr);
   o.progress = progress.get();

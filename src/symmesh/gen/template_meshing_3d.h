@@ -4,12 +4,36 @@
 /// spec/generation.md#alg-5-7
 #pragma once
 #include "symmesh/gen/certificate_3d.h"
+#include "symmesh/gen/outlier_repair.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 
 #include <string>
 #include <vector>
 
 namespace symmesh::gen::surface3 {
+
+/// TetGen on `s` (mesh_domain_3), then, unless o.repair_outliers is off, the outlier repair
+/// (spec/generation.md#outlier-repair), its counts added to r.
+inline TetrahedralMeshOutput mesh_and_repair(const SurfaceInput& s,
+                                             const TetrahedralMeshingParameters& p,
+                                             const GenerationOptions& o, GenerationResult& r) {
+  auto out = mesh_domain_3(s, p);
+  if (!o.repair_outliers) return out;
+  const auto t0 = Clock::now();
+  const auto repair = repair_outliers(s, out, OutlierBounds{});
+  r.timings.outlier_repair += seconds_since(t0);
+  r.outliers_before += repair.outliers_before;
+  r.outliers_after += repair.outliers_after;
+  r.repair_flips += repair.flips;
+  r.repair_moves += repair.moves;
+  if (o.progress && repair.outliers_before > 0)
+    o.progress->message("outlier repair: " + std::to_string(repair.outliers_before) + " -> " +
+                        std::to_string(repair.outliers_after) +
+                        " tetrahedra beyond radius-edge 1.414 or below 10 degrees (" +
+                        std::to_string(repair.flips) + " flips, " + std::to_string(repair.moves) +
+                        " moves)");
+  return out;
+}
 
 /// Fills r.templated.templated with one TetGen mesh per template (its surface points first, in
 /// their local ids, which the SVB refers to) and every instance's transformation and region.
@@ -33,7 +57,7 @@ void mesh_templates_3(const core::TemplatedStructure<FT, 3>& x,
     p.size = o.size;
     TetrahedralMeshOutput out;
     try {
-      out = mesh_domain_3(s, p);
+      out = mesh_and_repair(s, p, o, r);
     } catch (const BoundaryChanged& e) {
       throw MeshingError("template '" + x.templates[i].name + "'" +
                          boundary_place(bpp, boundaries[i], i, e.triangle) + ": " + e.what() +

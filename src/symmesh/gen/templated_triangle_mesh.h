@@ -39,11 +39,17 @@ struct GenerationOptions {
   /// of neighbouring instances, condition (i) by a sweep) instead of mapping by mapping; slower,
   /// the independent check the tests compare with (spec/lemmas.md#lemma-4-2-surface-meshes).
   bool direct_certificate = false;
+  /// 3D: the outlier repair after TetGen (spec/generation.md#outlier-repair: flips and moves of
+  /// TetGen's interior points on the tetrahedra beyond radius-edge √2 or below a 10° dihedral
+  /// angle; the boundary is not touched).
+  bool repair_outliers = true;
 };
 
 struct GenerationTimings {
   double boundary_patch_partition = 0, line_meshes = 0, template_meshing = 0, svb = 0,
          certificate = 0;
+  /// 3D: the part of template_meshing that the outlier repair after TetGen took.
+  double outlier_repair = 0;
   double total() const {
     return boundary_patch_partition + line_meshes + template_meshing + svb + certificate;
   }
@@ -65,6 +71,9 @@ struct GenerationResult {
   /// --method merge (spec/generation.md#merge): interface points Algorithm 5.3 inserted, its
   /// rounds, close pairs Algorithm 5.2 merged and the points it moved.
   std::size_t merge_insertions = 0, merge_rounds = 0, merge_merged = 0, merge_moves = 0;
+  /// 3D outlier repair (spec/generation.md#outlier-repair), summed over the TetGen calls: cells
+  /// beyond its bounds before and after it, and its flips and vertex moves.
+  std::size_t outliers_before = 0, outliers_after = 0, repair_flips = 0, repair_moves = 0;
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):

@@ -72,6 +72,52 @@ double dot(const Vec3& a, const Vec3& b) {
 }
 } // namespace
 
+TetrahedronShape tetrahedron_shape(const double* p0, const double* p1, const double* p2,
+                                   const double* p3) {
+  const double* p[4] = {p0, p1, p2, p3};
+  // Outward normal of the face opposite vertex k: orthogonal to the face, pointing away from
+  // p[k].
+  Vec3 n[4];
+  for (int k = 0; k < 4; ++k) {
+    const double* a = p[(k + 1) % 4];
+    const double* b = p[(k + 2) % 4];
+    const double* d = p[(k + 3) % 4];
+    n[k] = cross(sub(b, a), sub(d, a));
+    if (dot(n[k], sub(p[k], a)) > 0) n[k] = {-n[k][0], -n[k][1], -n[k][2]};
+  }
+  // The dihedral angle at the edge shared by faces i and j is π minus the angle between their
+  // outward normals, so it grows with the cosine between them: the smallest and largest angles
+  // are those of the smallest and largest cosines.
+  double low = 1, high = -1;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const double cosine =
+          std::clamp(dot(n[i], n[j]) / std::sqrt(dot(n[i], n[i]) * dot(n[j], n[j])), -1.0, 1.0);
+      low = std::min(low, cosine);
+      high = std::max(high, cosine);
+    }
+  TetrahedronShape s;
+  s.min_dihedral_deg = 180.0 - std::acos(low) * 180.0 / M_PI;
+  s.max_dihedral_deg = 180.0 - std::acos(high) * 180.0 / M_PI;
+  const Vec3 u = sub(p[1], p[0]), w = sub(p[2], p[0]), t = sub(p[3], p[0]);
+  const double six_volume = dot(u, cross(w, t));
+  const Vec3 a = cross(w, t), b = cross(t, u), d = cross(u, w);
+  Vec3 centre{};
+  for (int k = 0; k < 3; ++k)
+    centre[std::size_t(k)] = (dot(u, u) * a[std::size_t(k)] + dot(w, w) * b[std::size_t(k)] +
+                              dot(t, t) * d[std::size_t(k)]) /
+                             (2 * six_volume);
+  double shortest2 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const Vec3 e = sub(p[j], p[i]);
+      shortest2 = std::min(shortest2, dot(e, e));
+    }
+  s.radius_edge_ratio = six_volume == 0 ? std::numeric_limits<double>::infinity()
+                                        : std::sqrt(dot(centre, centre) / shortest2);
+  return s;
+}
+
 TetrahedronQualityStatistics tetrahedron_quality(const Mesh& m, double bound_deg) {
   if (m.point_dimension != 3)
     throw std::invalid_argument("tetrahedron_quality: the mesh is not 3D");
@@ -82,49 +128,13 @@ TetrahedronQualityStatistics tetrahedron_quality(const Mesh& m, double bound_deg
     if (m.cell_types[c] != ElementType::tetrahedron)
       throw std::invalid_argument("tetrahedron_quality: a cell is not a tetrahedron");
     const auto* v = m.cell(c);
-    const double* p[4];
-    for (int k = 0; k < 4; ++k) p[k] = m.vertex(std::size_t(v[k]));
-    // Outward normal of the face opposite vertex k: orthogonal to the face, pointing away from
-    // p[k].
-    Vec3 n[4];
-    for (int k = 0; k < 4; ++k) {
-      const double* a = p[(k + 1) % 4];
-      const double* b = p[(k + 2) % 4];
-      const double* d = p[(k + 3) % 4];
-      n[k] = cross(sub(b, a), sub(d, a));
-      if (dot(n[k], sub(p[k], a)) > 0) n[k] = {-n[k][0], -n[k][1], -n[k][2]};
-    }
-    // The dihedral angle at the edge shared by faces i and j is π minus the angle between their
-    // outward normals.
-    double smallest = 180, largest = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        const double cosine =
-            std::clamp(dot(n[i], n[j]) / std::sqrt(dot(n[i], n[i]) * dot(n[j], n[j])), -1.0, 1.0);
-        const double angle = 180.0 - std::acos(cosine) * 180.0 / M_PI;
-        smallest = std::min(smallest, angle);
-        largest = std::max(largest, angle);
-      }
-    const Vec3 u = sub(p[1], p[0]), w = sub(p[2], p[0]), t = sub(p[3], p[0]);
-    const double six_volume = dot(u, cross(w, t));
-    const Vec3 a = cross(w, t), b = cross(t, u), d = cross(u, w);
-    Vec3 centre{};
-    for (int k = 0; k < 3; ++k)
-      centre[std::size_t(k)] = (dot(u, u) * a[std::size_t(k)] + dot(w, w) * b[std::size_t(k)] +
-                                dot(t, t) * d[std::size_t(k)]) /
-                               (2 * six_volume);
-    double shortest2 = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        const Vec3 e = sub(p[j], p[i]);
-        shortest2 = std::min(shortest2, dot(e, e));
-      }
-    q.max_radius_edge_ratio =
-        std::max(q.max_radius_edge_ratio, std::sqrt(dot(centre, centre) / shortest2));
-    q.min_dihedral_deg = std::min(q.min_dihedral_deg, smallest);
-    q.max_dihedral_deg = std::max(q.max_dihedral_deg, largest);
-    q.histogram[std::min<std::size_t>(17, std::size_t(smallest / 5))]++;
-    if (smallest < bound_deg) ++q.below_bound;
+    const auto s = tetrahedron_shape(m.vertex(std::size_t(v[0])), m.vertex(std::size_t(v[1])),
+                                     m.vertex(std::size_t(v[2])), m.vertex(std::size_t(v[3])));
+    q.max_radius_edge_ratio = std::max(q.max_radius_edge_ratio, s.radius_edge_ratio);
+    q.min_dihedral_deg = std::min(q.min_dihedral_deg, s.min_dihedral_deg);
+    q.max_dihedral_deg = std::max(q.max_dihedral_deg, s.max_dihedral_deg);
+    q.histogram[std::min<std::size_t>(17, std::size_t(s.min_dihedral_deg / 5))]++;
+    if (s.min_dihedral_deg < bound_deg) ++q.below_bound;
     ++q.tetrahedra;
   }
   if (q.tetrahedra == 0) q.min_dihedral_deg = 0;

@@ -43,6 +43,14 @@ struct TetrahedronQualityStatistics {
   double bound_deg = 0;
 };
 
+/// The measures of one tetrahedron (any orientation): its smallest and largest dihedral angle
+/// and its radius-edge ratio; a flat one has an infinite ratio.
+struct TetrahedronShape {
+  double min_dihedral_deg = 0, max_dihedral_deg = 0, radius_edge_ratio = 0;
+};
+TetrahedronShape tetrahedron_shape(const double* p0, const double* p1, const double* p2,
+                                   const double* p3);
+
 /// \pre every cell of m is a tetrahedron, m.point_dimension == 3
 TetrahedronQualityStatistics tetrahedron_quality(const Mesh& m, double bound_deg);
 /// AT's statistics from the templates (rigid maps keep dihedral angles and ratios).

@@ -1,0 +1,39 @@
+/// Section 5.2.6 (quality improvement by smoothing and flips), applied to the few tetrahedra
+/// TetGen leaves beyond its bounds — spec/generation.md#outlier-repair
+///
+/// TetGen with -Y skips a refinement whose Steiner point would encroach the kept surface, so a
+/// few tetrahedra near it stay above the radius-edge bound, and -q bounds no dihedral angle. In a
+/// templated mesh every such outlier of a template is repeated in each of its instances. This
+/// pass works on those outliers only (radius-edge ratio above `radius_edge` or smallest dihedral
+/// angle below `min_dihedral_deg`): 2-3 flips of their facets, 3-2 flips of their edges, and
+/// moves of their vertices that TetGen added inside the domain. It never touches the boundary: a
+/// facet that is an input triangle is never flipped, an input point never moves, and no point is
+/// added, so the surface, the region of every tetrahedron and the points' order are those TetGen
+/// returned, and a templated mesh's shared vertex bookkeeping and Lemma 4.2 certificate are
+/// unaffected. A change is made only when every new tetrahedron is positively oriented (exact
+/// orientation on the doubles) and it makes the replaced cells' worst measure better without
+/// making the other measure worse than the bounds (OutlierBounds). Deterministic.
+#pragma once
+#include "symmesh/gen/tetrahedral_mesher.h"
+
+#include <cstddef>
+
+namespace symmesh::gen {
+
+struct OutlierBounds {
+  double radius_edge = 1.414;   ///< the -q bound TetGen was given
+  double min_dihedral_deg = 10; ///< the report's dihedral bound (api: kDihedralBoundDeg)
+  std::size_t max_passes = 6;   ///< sweeps over the remaining outliers
+};
+
+struct OutlierRepairReport {
+  std::size_t outliers_before = 0, outliers_after = 0, flips = 0, moves = 0;
+};
+
+/// Repairs the outliers of `m`, TetGen's mesh of `surface` (mesh_domain_3's output: the surface
+/// points first, every boundary facet an input triangle, every tetrahedron positive).
+/// \pre m is mesh_domain_3(surface, ...)'s result; b.radius_edge >= 1, b.min_dihedral_deg >= 0
+OutlierRepairReport repair_outliers(const SurfaceInput& surface, TetrahedralMeshOutput& m,
+                                    const OutlierBounds& b);
+
+} // namespace symmesh::gen
