@@ -169,6 +169,24 @@ TEST(TetrahedralGeneration, PerturbedSurfaceMeshFailsTheCertificate) {
       std::invalid_argument);
 }
 
+/// A carried surface mesh whose frame is off (as a defect in carrying the copies would leave it;
+/// its (s, t) list is right) fails the certificate's frame check, and the general checker, which
+/// compares the points themselves, agrees.
+TEST(TetrahedralGeneration, MovedFaceFrameFailsTheCertificate) {
+  for (const char* file : {"translated_boxes_3d.json", "rotational_slice_3d.json"}) {
+    const auto x = fixture(file);
+    gen::GenerationOptions o;
+    o.size = 0.2;
+    o.perturb_one_face_frame = true;
+    const auto r = gen::generate_tetrahedral_mesh(x, gen::Method::bpp, o);
+    EXPECT_FALSE(r.lemma_4_2_holds) << file;
+    EXPECT_NE(r.lemma_4_2_failure.find("their frames differ"), std::string::npos)
+        << file << ": " << r.lemma_4_2_failure;
+    o.direct_certificate = true;
+    EXPECT_FALSE(gen::generate_tetrahedral_mesh(x, gen::Method::bpp, o).lemma_4_2_holds) << file;
+  }
+}
+
 /// Algorithm 6.4 in 3D on the built-in FinFET (two orthogonal mirrors, four copies): only copy
 /// 0's BPP, certified by its mappings plus the fixed mirror interfaces; the general checker
 /// agrees; a perturbed surface mesh fails both; combined is refused (no rotation of order >= 3).

@@ -91,7 +91,8 @@ struct SurfaceBoundary {
   /// per subdivision face: set when its interior points are exact[facet_first + k] =
   /// facet_plane->at((*facet_st)[k]) — an invariant the certificate relies on and does not
   /// re-check: surface_meshes writes all three, perturb_one_surface_mesh changes one (s, t) and
-  /// its point together, and nothing else writes them (the merge method leaves facet_plane unset)
+  /// its point together, perturb_one_face_frame one frame and its points, and nothing else
+  /// writes them (the merge method leaves facet_plane unset)
   std::vector<std::optional<FacePlane<FT>>> facet_plane;
   std::vector<std::shared_ptr<const std::vector<std::array<FT, 2>>>> facet_st;
   std::vector<std::array<std::size_t, 3>> triangles;
@@ -557,6 +558,32 @@ void perturb_one_surface_mesh(const core::BoundaryPatchPartition<FT, 3>& bpp,
   }
   throw std::invalid_argument(
       "perturb_one_surface_mesh: no face mapped onto another face has interior vertices");
+}
+
+/// GenerationOptions::perturb_one_face_frame: as a defect in carrying a surface mesh would, the
+/// frame of the first image face in face coordinates that a non-trivial mapping sends another
+/// face onto moves within its plane by u/2^20, and its interior points follow it (exact =
+/// at(s, t) still holds, the (s, t) list is the source's), so only the frames disagree.
+template <class FT>
+void perturb_one_face_frame(const core::BoundaryPatchPartition<FT, 3>& bpp,
+                            std::vector<SurfaceBoundary<FT>>& boundaries) {
+  for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
+    const auto& m = bpp.mappings[l];
+    if (m.whole_boundary) continue;
+    auto& tb = boundaries[m.to_template()];
+    for (auto [f, g] : bpp.letter_action[l]) {
+      if (tb.facet_count[g] == 0 || !tb.facet_plane[g] || tb.facet_symmetric[g] ||
+          (m.from_template() == m.to_template() && f == g))
+        continue;
+      auto& plane = *tb.facet_plane[g];
+      plane.p0 = plane.p0 + core::scaled<FT, 3>(plane.u, FT(1) / FT(1 << 20));
+      for (std::size_t k = 0; k < tb.facet_count[g]; ++k)
+        tb.exact[tb.facet_first[g] + k] = plane.at((*tb.facet_st[g])[k]);
+      return;
+    }
+  }
+  throw std::invalid_argument(
+      "perturb_one_face_frame: no face in face coordinates is the image of another face");
 }
 
 } // namespace symmesh::gen::surface3

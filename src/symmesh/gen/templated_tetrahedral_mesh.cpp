@@ -358,6 +358,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
     boundaries.push_back(line_meshes_3<FT>(sd, h2, o.size, even));
   surface_meshes(x, bpp, classes, groups, boundaries, h2, o.size, o.min_angle_deg);
   if (o.perturb_one_surface_mesh) perturb_one_surface_mesh(bpp, boundaries);
+  if (o.perturb_one_face_frame) perturb_one_face_frame(bpp, boundaries);
   r.timings.line_meshes = seconds_since(t0);
   faults.line_meshes = minor_faults() - f0;
 

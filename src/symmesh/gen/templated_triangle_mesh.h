@@ -35,6 +35,10 @@ struct GenerationOptions {
   /// class, move one interior vertex of one interface face a little within its plane (exactly),
   /// so that its instances no longer conform and the Lemma 4.2 certificate must fail.
   bool perturb_one_surface_mesh = false;
+  /// Fault injection for tests (3D): the frame of one face carried in face coordinates moves
+  /// within its plane, its points with it, as a defect in carrying the copies would (the
+  /// certificate's frame check must fail).
+  bool perturb_one_face_frame = false;
   /// 3D: certify with the general Lemma 4.2 checker on the exact boundary complexes (every pair
   /// of neighbouring instances, condition (i) by a sweep) instead of mapping by mapping; slower,
   /// the independent check the tests compare with (spec/lemmas.md#lemma-4-2-surface-meshes).
