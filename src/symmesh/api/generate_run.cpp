@@ -97,14 +97,13 @@ void refuse_infeasible_size(const gen::CellEstimate& e, const RunOptions& o) {
 /// Tetrahedron quality of AT from the templates (Table 7.1's measures): dihedral angles,
 /// radius-edge ratio, and the tetrahedra whose smallest dihedral angle is below 10°.
 nlohmann::ordered_json tetrahedron_quality_json(const mesh::TemplatedMesh& t) {
-  constexpr double kDihedralBoundDeg = 10;
-  const auto q = mesh::tetrahedron_quality(t, kDihedralBoundDeg);
+  const auto q = mesh::tetrahedron_quality(t, mesh::kDihedralBoundDeg);
   nlohmann::ordered_json j;
   j["tetrahedra"] = q.tetrahedra;
   j["min_dihedral_deg"] = q.min_dihedral_deg;
   j["max_dihedral_deg"] = q.max_dihedral_deg;
   j["max_radius_edge_ratio"] = q.max_radius_edge_ratio;
-  j["dihedral_bound_deg"] = kDihedralBoundDeg;
+  j["dihedral_bound_deg"] = mesh::kDihedralBoundDeg;
   j["below_dihedral_bound"] = q.below_bound;
   j["min_dihedral_histogram_bin_deg"] = 5;
   j["min_dihedral_histogram"] = q.histogram;

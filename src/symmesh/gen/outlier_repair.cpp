@@ -163,8 +163,15 @@ private:
     Worst w;
     for (const auto& t : ts) {
       const auto s = shape(t, moved, to);
-      w.radius_edge = std::max(w.radius_edge, s.radius_edge_ratio);
-      w.min_dihedral_deg = std::min(w.min_dihedral_deg, s.min_dihedral_deg);
+      // A measure rounding made meaningless (a face normal of length zero in doubles) counts as
+      // the worst one: std::min and std::max would skip a NaN.
+      const bool meaningless = !std::isfinite(s.radius_edge_ratio) ||
+                               !std::isfinite(s.min_dihedral_deg) ||
+                               !std::isfinite(s.max_dihedral_deg);
+      w.radius_edge = meaningless ? std::numeric_limits<double>::infinity()
+                                  : std::max(w.radius_edge, s.radius_edge_ratio);
+      w.min_dihedral_deg = meaningless ? 0 : std::min(w.min_dihedral_deg, s.min_dihedral_deg);
+      if (meaningless) break;
     }
     return w;
   }

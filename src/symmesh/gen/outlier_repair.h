@@ -1,8 +1,9 @@
 /// Section 5.2.6 (quality improvement by smoothing and flips), applied to the few tetrahedra
-/// TetGen leaves beyond its bounds — spec/generation.md#outlier-repair
+/// TetGen leaves with a radius-edge ratio above √2 or a dihedral angle below 10° —
+/// spec/generation.md#outlier-repair
 ///
 /// TetGen with -Y skips a refinement whose Steiner point would encroach the kept surface, so a
-/// few tetrahedra near it stay above the radius-edge bound, and -q bounds no dihedral angle. In a
+/// few tetrahedra near it keep a high radius-edge ratio, and -q bounds no dihedral angle. In a
 /// templated mesh every such outlier of a template is repeated in each of its instances. This
 /// pass works on those outliers only (radius-edge ratio above `radius_edge` or smallest dihedral
 /// angle below `min_dihedral_deg`): 2-3 flips of their facets, 3-2 flips of their edges, and
@@ -11,19 +12,25 @@
 /// added, so the surface, the region of every tetrahedron and the points' order are those TetGen
 /// returned, and a templated mesh's shared vertex bookkeeping and Lemma 4.2 certificate are
 /// unaffected. A change is made only when every new tetrahedron is positively oriented (exact
-/// orientation on the doubles) and it makes the replaced cells' worst measure better without
-/// making the other measure worse than the bounds (OutlierBounds). Deterministic.
+/// orientation on the doubles) and it makes the replaced cells' worst measure better while
+/// neither measure ends worse than both its old value and its limit: the bound, or the mesh's
+/// worst value as TetGen left it where that is within the bound. So the mesh's largest ratio and
+/// smallest dihedral angle never get worse. Deterministic.
 #pragma once
 #include "symmesh/gen/tetrahedral_mesher.h"
+#include "symmesh/mesh/quality.h"
 
 #include <cstddef>
 
 namespace symmesh::gen {
 
 struct OutlierBounds {
-  double radius_edge = 1.414;   ///< the -q bound TetGen was given
-  double min_dihedral_deg = 10; ///< the report's dihedral bound (api: kDihedralBoundDeg)
-  std::size_t max_passes = 6;   ///< sweeps over the remaining outliers
+  /// √2: what Delaunay refinement reaches away from small input angles (TetGen's manual suggests
+  /// -q1.414); symmesh runs TetGen with -q2 (tetgen_switches), so these cells are within
+  /// TetGen's own bound but beyond this one
+  double radius_edge = 1.414;
+  double min_dihedral_deg = mesh::kDihedralBoundDeg; ///< the report's dihedral bound
+  std::size_t max_passes = 6;                        ///< sweeps over the remaining outliers
 };
 
 struct OutlierRepairReport {

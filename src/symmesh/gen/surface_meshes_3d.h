@@ -570,9 +570,12 @@ void perturb_one_face_frame(const core::BoundaryPatchPartition<FT, 3>& bpp,
   for (std::size_t l = 0; l < bpp.mappings.size(); ++l) {
     const auto& m = bpp.mappings[l];
     if (m.whole_boundary) continue;
+    const auto& source = boundaries[m.from_template()];
     auto& tb = boundaries[m.to_template()];
     for (auto [f, g] : bpp.letter_action[l]) {
+      // Both faces in face coordinates and not symmetric: the faces the frame check decides.
       if (tb.facet_count[g] == 0 || !tb.facet_plane[g] || tb.facet_symmetric[g] ||
+          !source.facet_plane[f] || source.facet_symmetric[f] ||
           (m.from_template() == m.to_template() && f == g))
         continue;
       auto& plane = *tb.facet_plane[g];

@@ -89,16 +89,18 @@ TetrahedronShape tetrahedron_shape(const double* p0, const double* p1, const dou
   // outward normals, so it grows with the cosine between them: the smallest and largest angles
   // are those of the smallest and largest cosines.
   double low = 1, high = -1;
+  bool undefined = false; // a face normal of length zero: no angle
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
       const double cosine =
           std::clamp(dot(n[i], n[j]) / std::sqrt(dot(n[i], n[i]) * dot(n[j], n[j])), -1.0, 1.0);
+      undefined = undefined || std::isnan(cosine);
       low = std::min(low, cosine);
       high = std::max(high, cosine);
     }
   TetrahedronShape s;
-  s.min_dihedral_deg = 180.0 - std::acos(low) * 180.0 / M_PI;
-  s.max_dihedral_deg = 180.0 - std::acos(high) * 180.0 / M_PI;
+  s.min_dihedral_deg = undefined ? NAN : 180.0 - std::acos(low) * 180.0 / M_PI;
+  s.max_dihedral_deg = undefined ? NAN : 180.0 - std::acos(high) * 180.0 / M_PI;
   const Vec3 u = sub(p[1], p[0]), w = sub(p[2], p[0]), t = sub(p[3], p[0]);
   const double six_volume = dot(u, cross(w, t));
   const Vec3 a = cross(w, t), b = cross(t, u), d = cross(u, w);
@@ -133,8 +135,10 @@ TetrahedronQualityStatistics tetrahedron_quality(const Mesh& m, double bound_deg
     q.max_radius_edge_ratio = std::max(q.max_radius_edge_ratio, s.radius_edge_ratio);
     q.min_dihedral_deg = std::min(q.min_dihedral_deg, s.min_dihedral_deg);
     q.max_dihedral_deg = std::max(q.max_dihedral_deg, s.max_dihedral_deg);
-    q.histogram[std::min<std::size_t>(17, std::size_t(s.min_dihedral_deg / 5))]++;
-    if (s.min_dihedral_deg < bound_deg) ++q.below_bound;
+    // A cell without angles (NaN) counts as the worst: bin 0 and below the bound.
+    const double smallest = std::isnan(s.min_dihedral_deg) ? 0 : s.min_dihedral_deg;
+    q.histogram[std::min<std::size_t>(17, std::size_t(smallest / 5))]++;
+    if (smallest < bound_deg) ++q.below_bound;
     ++q.tetrahedra;
   }
   if (q.tetrahedra == 0) q.min_dihedral_deg = 0;

@@ -44,12 +44,18 @@ struct TetrahedronQualityStatistics {
 };
 
 /// The measures of one tetrahedron (any orientation): its smallest and largest dihedral angle
-/// and its radius-edge ratio; a flat one has an infinite ratio.
+/// and its radius-edge ratio; a flat one has an infinite ratio, and its angles are NaN when a
+/// face has no normal in doubles (the statistics below leave NaN out of the extremes, as they
+/// always did, and count such a cell in the lowest histogram bin and below the bound).
 struct TetrahedronShape {
   double min_dihedral_deg = 0, max_dihedral_deg = 0, radius_edge_ratio = 0;
 };
 TetrahedronShape tetrahedron_shape(const double* p0, const double* p1, const double* p2,
                                    const double* p3);
+
+/// The smallest dihedral angle the 3D report counts cells below (`dihedral_bound_deg`), and the
+/// outlier repair's bound (gen/outlier_repair.h).
+inline constexpr double kDihedralBoundDeg = 10;
 
 /// \pre every cell of m is a tetrahedron, m.point_dimension == 3
 TetrahedronQualityStatistics tetrahedron_quality(const Mesh& m, double bound_deg);
