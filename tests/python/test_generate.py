@@ -52,6 +52,17 @@ def test_3d_cell_counts_equal_the_cli_report(root, cli_report):
     assert len(numpy.unique(at.cell_data["instance"][0])) == report["instances"]
 
 
+def test_3d_no_repair_is_the_cli_no_repair(root, cli_report):
+    # generate(..., repair=False) is `--no-repair` (spec/generation.md#outlier-repair): the same
+    # cells as the CLI with it, and no outlier_repair in the report; by default the repair runs.
+    path = root / "data/rotational_slice_3d.json"
+    report, _ = cli_report(path, "--size", "0.3", "--no-repair")
+    plain = symmesh.generate(path, size=0.3, repair=False)
+    assert counts(plain) == (report["cells_structure_instance"], report["cells_templates"])
+    assert "outlier_repair" not in plain.report and "outlier_repair" not in report
+    assert "outlier_repair" in symmesh.generate(path, size=0.3).report
+
+
 def test_meshio_writes_and_reads_the_returned_meshes(root, tmp_path):
     templated, at = symmesh.generate(root / "data/ngon_slice_8.json", size=0.1)
     for mesh, name in ((at, "at.vtu"), (templated, "templated.vtu"), (at, "at.msh")):
