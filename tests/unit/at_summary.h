@@ -1,6 +1,6 @@
 // The structure instance of a 3D templated mesh summarised independently of the generator
-// (shared by the generation and outlier-repair tests): AT assembled from the SVB, faces counted
-// by vertex ids, volumes and boundary area from the double coordinates.
+// (shared by the generation, mesher and outlier-repair tests): AT assembled from the SVB, faces
+// counted by vertex ids, volumes and boundary area from the double coordinates.
 #pragma once
 #include "symmesh/mesh/templated_mesh.h"
 
@@ -11,6 +11,20 @@
 #include <map>
 
 namespace symmesh::test {
+
+/// The signed volume of tetrahedron abcd (positive when abcd is positively oriented).
+inline double signed_volume(const double* a, const double* b, const double* c, const double* d) {
+  double u[3][3];
+  for (int k = 0; k < 3; ++k) {
+    u[0][k] = b[k] - a[k];
+    u[1][k] = c[k] - a[k];
+    u[2][k] = d[k] - a[k];
+  }
+  return (u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) -
+          u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0]) +
+          u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0])) /
+         6;
+}
 
 struct AtSummary {
   std::size_t tetrahedra = 0, non_positive = 0, faces_in_more_than_two = 0;
@@ -27,13 +41,8 @@ inline AtSummary summarise(const mesh::TemplatedMeshCompactSvb& t) {
   const auto p = [&](int v, int d) { return m.vertex(std::size_t(v))[d]; };
   for (std::size_t c = 0; c < m.cell_count(); ++c) {
     const auto* v = m.cell(c);
-    double e[3][3];
-    for (int k = 0; k < 3; ++k)
-      for (int d = 0; d < 3; ++d) e[k][d] = p(v[k + 1], d) - p(v[0], d);
-    const double vol = (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-                       6;
+    const double vol = signed_volume(m.vertex(std::size_t(v[0])), m.vertex(std::size_t(v[1])),
+                                     m.vertex(std::size_t(v[2])), m.vertex(std::size_t(v[3])));
     if (!(vol > 0)) ++s.non_positive;
     s.volume += vol;
     ++s.tetrahedra;

@@ -25,14 +25,8 @@ using gen::TetrahedralMeshOutput;
 namespace {
 
 double signed_volume(const TetrahedralMeshOutput& m, const std::array<std::size_t, 4>& c) {
-  double u[3][3];
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d)
-      u[k][d] = m.points[c[std::size_t(k + 1)]][std::size_t(d)] - m.points[c[0]][std::size_t(d)];
-  return (u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) -
-          u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0]) +
-          u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0])) /
-         6;
+  return test::signed_volume(m.points[c[0]].data(), m.points[c[1]].data(), m.points[c[2]].data(),
+                             m.points[c[3]].data());
 }
 
 /// Puts a hand-made tetrahedron in positive order, as TetGen's output is.

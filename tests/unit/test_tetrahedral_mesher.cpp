@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "symmesh/gen/tetrahedral_mesher.h"
+#include "at_summary.h"
 
 #include <algorithm>
 #include <array>
@@ -19,15 +20,8 @@ namespace {
 
 double volume(const gen::TetrahedralMeshOutput& m, std::size_t t) {
   const auto& c = m.tetrahedra[t];
-  const auto& a = m.points[c[0]];
-  double u[3][3];
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d)
-      u[k][d] = m.points[c[std::size_t(k + 1)]][std::size_t(d)] - a[std::size_t(d)];
-  return (u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) -
-          u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0]) +
-          u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0])) /
-         6;
+  return test::signed_volume(m.points[c[0]].data(), m.points[c[1]].data(), m.points[c[2]].data(),
+                             m.points[c[3]].data());
 }
 
 /// The surface of the box [x0, x0 + w] x [0, 1] x [0, 1] (x0, w integers) as a grid of n
