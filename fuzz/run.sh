@@ -4,7 +4,7 @@
 # (fuzz/corpus/<harness>/, which `make test` replays). Writes docs/fuzzing.md: executions,
 # coverage (libFuzzer's cov: edges) and findings per harness, with the machine and the command.
 # Usage: [FUZZ_PARALLEL=1] [FUZZ_WORKERS=N] bash fuzz/run.sh [seconds per harness] [harness...]
-# (default 120, all five; FUZZ_PARALLEL=1 runs them side by side; FUZZ_WORKERS=N runs N processes
+# (default 120, all six; FUZZ_PARALLEL=1 runs them side by side; FUZZ_WORKERS=N runs N processes
 # per harness on one shared corpus, as libFuzzer's -jobs does; FUZZ_REPORT_ONLY=1 only rewrites
 # the report).
 # Findings go to build-fuzz/<harness>/{crash,timeout,oom}-*; copy each into fuzz/corpus/<harness>/
@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 secs=${1:-120}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate adapt tmesh_cloning)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(templated_structure_json tmesh generate adapt tmesh_cloning delaunay_3d)
 report=docs/fuzzing.md
 # A timeout is wall-clock time: a niced campaign beside a build can be starved past it. Each
 # timeout input is run again alone; one that ends within the limit is kept as
@@ -99,10 +99,12 @@ campaign() {
   harness_sha "$h" > "$work/harness.sha"
   local log=$work/campaign.log
   # The adaptation harness reads 3 bytes per operation: 31 bytes = up to 10 operations; the
-  # cloning harness ignores inputs longer than 41 bytes (20 operations).
+  # cloning harness ignores inputs longer than 41 bytes (20 operations), the Technique 5.8 one
+  # inputs longer than 24 (6 geometry bytes and 6 operations).
   local max_len=4096
   [ "$h" = adapt ] && max_len=31
   [ "$h" = tmesh_cloning ] && max_len=41
+  [ "$h" = delaunay_3d ] && max_len=24
   # Speed: ASan keeps no allocation stacks (a finding is replayed with full stacks from its
   # artifact), and every harness but generate uses the plain scheduler: entropic's feature
   # bookkeeping took 22 % of the JSON harness's time (356 -> 481 inputs/s without it) and 53 % of

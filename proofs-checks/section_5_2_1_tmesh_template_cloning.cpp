@@ -13,6 +13,13 @@
 // Dropped hypothesis (the templates are identical): merging the changed clone into the original
 // anyway gives its instance the original's cells, and AT changes; splitting without identifying
 // the two parts along the cut gives AT more vertices and an open cut.
+// Claim (congruent merging): when the clone is moved by a random signed permutation R (its
+// coordinates replaced by their images, its vertices and cells renumbered at random, its
+// instance's transformation composed with R^{-1}, the tables renumbered: AT is unchanged),
+// template_congruence finds R exactly and merge_congruent_templates merges the clone back with AT
+// unchanged, cell for cell; a moved clone whose interior was also changed is refused. Dropped
+// hypothesis (the motion): merging the moved clone as if it were identical (its instance keeps
+// the transformation made for the moved coordinates) changes AT.
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/adapt/tmesh_template_cloning.h"
@@ -20,8 +27,10 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -135,6 +144,120 @@ void clone_and_merge(const boxes::BoxInput& g, bool change_clone, bool identical
   SYMMESH_PROOF_ASSERT(structure_instance_cells(t) == changed, failure, no_picture);
 }
 
+/// Moves template `ti` (instanced once, its instance `instance`) by the signed permutation x ->
+/// (sign_k x_perm(k)): coordinates replaced by their images (exact), vertices renumbered by a
+/// random permutation, cells shuffled and, when R reverses orientation, two corners swapped; the
+/// instance's transformation becomes T ∘ R^{-1} (exact: a signed permutation of T's columns), the
+/// tables follow the new vertex numbers. AT is unchanged.
+void move_template(mesh::TemplatedMeshCompactSvb& t, std::size_t ti) {
+  const int d = t.templated.point_dimension;
+  auto& mt = t.templated.templates[ti];
+  auto& m = mt.mesh;
+  std::vector<std::vector<int>> perms;
+  std::vector<int> perm(static_cast<std::size_t>(d));
+  std::iota(perm.begin(), perm.end(), 0);
+  do perms.push_back(perm);
+  while (std::next_permutation(perm.begin(), perm.end()));
+  perm = *rc::gen::elementOf(perms);
+  const auto signs =
+      *rc::gen::container<std::vector<bool>>(std::size_t(d), rc::gen::arbitrary<bool>());
+  // det R = sign of the permutation times the product of the signs.
+  int det = 1;
+  for (int a = 0; a < d; ++a)
+    for (int b = a + 1; b < d; ++b)
+      if (perm[std::size_t(a)] > perm[std::size_t(b)]) det = -det;
+  for (bool negative : signs)
+    if (negative) det = -det;
+  RC_TAG(det < 0 ? "R reverses orientation" : "R keeps orientation");
+  const std::size_t n = m.vertex_count();
+  std::vector<mesh::IndexType> rho(n);
+  for (std::size_t v = 0; v < n; ++v) rho[v] = mesh::IndexType(v);
+  const auto keys = *rc::gen::container<std::vector<unsigned>>(n, rc::gen::arbitrary<unsigned>());
+  std::stable_sort(rho.begin(), rho.end(), [&](mesh::IndexType a, mesh::IndexType b) {
+    return keys[std::size_t(a)] < keys[std::size_t(b)];
+  });                                      // rho[new] = old
+  std::vector<mesh::IndexType> renamed(n); // old -> new
+  for (std::size_t v = 0; v < n; ++v) renamed[std::size_t(rho[v])] = mesh::IndexType(v);
+  mesh::Mesh moved;
+  moved.point_dimension = d;
+  for (std::size_t v = 0; v < n; ++v) {
+    const double* x = m.vertex(std::size_t(rho[v]));
+    double y[3];
+    for (int k = 0; k < d; ++k)
+      y[k] = signs[std::size_t(k)] ? -x[perm[std::size_t(k)]] : x[perm[std::size_t(k)]];
+    moved.add_vertex(y);
+  }
+  std::vector<std::size_t> order(m.cell_count());
+  for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
+  std::reverse(order.begin(), order.end());
+  for (const auto c : order) {
+    std::vector<mesh::IndexType> v(m.cell(c), m.cell(c) + d + 1);
+    for (auto& x : v) x = renamed[std::size_t(x)];
+    if (det < 0) std::swap(v[0], v[1]);
+    moved.add_cell(m.cell_types[c], v.data());
+  }
+  m = std::move(moved);
+  // T ∘ R^{-1}: R^{-1} y has coordinate perm(k) equal to sign_k y_k, so column k of the new
+  // matrix is sign_k times column perm(k) of T's.
+  const auto& old = t.templated.transformations[std::size_t(mt.transformation_indices[0])];
+  mesh::Transformation composed = old;
+  for (int r = 0; r < d; ++r)
+    for (int k = 0; k < d; ++k) {
+      const double e = old.matrix[std::size_t(r * d + perm[std::size_t(k)])];
+      composed.matrix[std::size_t(r * d + k)] = signs[std::size_t(k)] ? -e : e;
+    }
+  mt.transformation_indices[0] = mesh::IndexType(t.templated.transformations.size());
+  t.templated.transformations.push_back(composed);
+  for (auto& table : t.tables) {
+    if (std::size_t(table.from_template) == ti)
+      for (auto& pair : table.pairs) pair.first = renamed[std::size_t(pair.first)];
+    if (std::size_t(table.to_template) == ti)
+      for (auto& pair : table.pairs) pair.second = renamed[std::size_t(pair.second)];
+  }
+}
+
+void merge_moved_clone(const boxes::BoxInput& g, bool change_clone, bool by_congruence) {
+  const std::string text = g.description();
+  const auto failure = [&] { return text; };
+  const auto no_picture = [] { return std::string(); };
+  auto t = g.generate();
+  const auto before = record_of(t);
+  const auto templates = t.templated.templates.size();
+  const auto instance = std::size_t(*rc::gen::inRange<int>(0, int(t.templated.instance_count())));
+  std::size_t original = 0;
+  for (std::size_t k = instance; k >= t.templated.templates[original].instance_count();)
+    k -= t.templated.templates[original++].instance_count();
+  const auto clone = adapt::clone_template(t, instance);
+  move_template(t, clone.template_index);
+  SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
+  RC_TAG(adapt::identical_templates(t, original, clone.template_index) ? "R = identity"
+                                                                       : "moved clone");
+  if (change_clone) {
+    adapt::expand_identifications(t);
+    const auto edge = interior_edge(t, clone.template_index);
+    RC_PRE(edge.has_value());
+    adapt::bisect_edges(t, {*edge});
+    SYMMESH_PROOF_ASSERT(!adapt::template_congruence(t, original, clone.template_index), failure,
+                         no_picture);
+    bool refused = false;
+    try {
+      adapt::merge_congruent_templates(t, original, clone.template_index);
+    } catch (const std::invalid_argument&) {
+      refused = true;
+    }
+    SYMMESH_PROOF_ASSERT(refused, failure, no_picture);
+    return;
+  }
+  SYMMESH_PROOF_ASSERT(adapt::template_congruence(t, original, clone.template_index).has_value(),
+                       failure, no_picture);
+  if (by_congruence)
+    SYMMESH_PROOF_ASSERT(adapt::merge_congruent_templates(t) == 1, failure, no_picture);
+  else
+    adapt::detail::merge_templates_unchecked(t, original, clone.template_index);
+  SYMMESH_PROOF_ASSERT(t.templated.templates.size() == templates, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
+}
+
 /// Splits a random template of g's mesh along a random non-empty proper subset of its cells;
 /// without `identify_cut`, the two parts of each instance are not identified along the cut.
 void split_random_part(const boxes::BoxInput& g, bool identify_cut) {
@@ -206,6 +329,23 @@ void register_section_5_2_1_tmesh(std::vector<Property>& p) {
                  [d] {
                    return rc::detail::toProperty(
                        [d] { clone_and_merge(*boxes::box_grid(d), true, false); });
+                 }});
+  for (int d : {2, 3})
+    p.push_back({kClaim,
+                 "tmesh_merge_congruent_keeps_the_structure_instance_" + std::to_string(d) + "d", d,
+                 Kind::holds,
+                 "Section 5.2.1 on generated box grids: a clone moved by a random signed "
+                 "permutation (renumbered, its instance's transformation composed with the "
+                 "inverse) is found congruent exactly and merged back with AT unchanged, cell for "
+                 "cell, certified; a moved clone changed inside is refused",
+                 [d] {
+                   return rc::detail::toProperty([d] {
+                     merge_moved_clone(*boxes::box_grid(d), *rc::gen::arbitrary<bool>(), true);
+                   });
+                 },
+                 [d] {
+                   return rc::detail::toProperty(
+                       [d] { merge_moved_clone(*boxes::box_grid(d), false, false); });
                  }});
   for (int d : {2, 3})
     p.push_back(

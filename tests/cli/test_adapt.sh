@@ -235,6 +235,58 @@ print(grow(l), grow(g))" "$TMP/$name.l.json" "$TMP/$name.g.json"); then
     pass "$name: the cloned instance refined alone adds ${added% *} cells, its whole template ${added#* } ($(echo "$msg" | tail -1))"
   else fail "$name: local refinement: $msg $added"; fi
 done
+# --merge-congruent (spec/adaptation.md#tmesh-cloning): the clone of the block above, mirrored
+# in x (coordinates negated, vertices renumbered in reverse, two corners of every cell swapped,
+# its instance's transformation composed with the mirror, the tables renumbered: AT unchanged),
+# is no longer identical; --merge-congruent finds the mirror exactly and merges it back, and AT
+# keeps its cells (by coordinates). --merge-identical leaves it.
+for name in n8 tsv8; do
+  $PY - "$TMP/$name.c.tmesh" "$TMP/$name.r.tmesh" <<'PYEOF'
+import json, sys
+t = json.load(open(sys.argv[1]))
+d = t["dimension"]
+k = len(t["templates"]) - 1
+tp = t["templates"][k]
+n = len(tp["vertices"])
+new = lambda v: n - 1 - v
+tp["vertices"] = [[-x[0]] + x[1:] for x in reversed(tp["vertices"])]
+tp["cells"] = [[new(c[1]), new(c[0])] + [new(v) for v in c[2:]] for c in tp["cells"]]
+for inst in tp["instances"]:
+    f = t["transformations"][inst["transformation"]]
+    m = list(f["matrix"])
+    for r in range(d):
+        m[r * d] = -m[r * d]
+    t["transformations"].append({"matrix": m, "translation": f["translation"]})
+    inst["transformation"] = len(t["transformations"]) - 1
+for table in t["identification_tables"]:
+    table["pairs"] = [[new(a) if table["from_template"] == k else a,
+                       new(b) if table["to_template"] == k else b] for a, b in table["pairs"]]
+json.dump(t, open(sys.argv[2], "w"))
+PYEOF
+  if "$BIN" adapt "$TMP/$name.r.tmesh" --merge-identical -o "$TMP/$name.ri.tmesh" \
+      --report "$TMP/$name.ri.json" --quiet \
+    && "$BIN" adapt "$TMP/$name.r.tmesh" --merge-congruent -o "$TMP/$name.rm.tmesh" \
+      --vtu "$TMP/$name.rm.vtu" --report "$TMP/$name.rm.json" 2> "$TMP/stderr" \
+    && $PY - "$TMP/$name" <<'PYEOF'
+import json, sys
+import meshio
+import numpy as np
+base = sys.argv[1]
+ri, rm = (json.load(open(f"{base}.{k}.json")) for k in ("ri", "rm"))
+nt = len(json.load(open(f"{base}.0.tmesh"))["templates"])
+assert ri["steps"][0]["merge_identical"] == 0, ri["steps"]
+assert rm["steps"][0] == {"merge_congruent": 1, "templates": nt}, rm["steps"]
+def cells(k):
+    m = meshio.read(f"{base}.{k}.vtu")
+    return sorted(tuple(sorted(tuple(np.round(m.points[v], 9)) for v in c)) for c in m.cells[0].data)
+assert cells("rm") == cells("0"), "congruent merging changed AT"
+PYEOF
+  then
+    grep -q "merge-congruent: 1 templates merged" "$TMP/stderr" \
+      && pass "$name: a mirrored clone is merged back by --merge-congruent, AT unchanged" \
+      || fail "$name: no progress line for --merge-congruent"
+  else fail "$name: --merge-congruent: $(cat "$TMP/stderr")"; fi
+done
 # --split-where (spec/adaptation.md#tmesh-cloning): every template with cells on both sides of
 # a plane through the middle of its x range splits in two, the new template instanced like the
 # old one; AT keeps its cells and vertices and conforms. Refining the split-off part alone then

@@ -8,14 +8,17 @@
 /// merging renames the merged template in every table (tables that become equal are kept once).
 /// Both leave AT unchanged: the same cells, the same coordinates, the same identified vertices.
 ///
-/// Merging is offered for identical templates only (the same coordinates, bit for bit, and the
-/// same cells). Templates related by a rigid motion other than the identity are not merged on
-/// this layer: their rounded coordinates are not exactly the motion's images, and deciding the
-/// motion up to rounding would be a distance tolerance (the exact core decides it exactly).
+/// Merging is offered for identical templates (the same coordinates, bit for bit, and the same
+/// cells) and for templates congruent by an exact motion: R(X_j) = X_i with the doubles taken as
+/// the rationals they are, decided without a tolerance (tmesh_template_congruence.cpp). Motions
+/// whose images of doubles are doubles qualify (translations, mirrors, signed permutations); a
+/// rotation by 2π/n, whose images are rounded, does not (the exact core decides that case
+/// exactly, on exact coordinates).
 #pragma once
 #include "symmesh/mesh/templated_mesh.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace symmesh::adapt {
@@ -44,6 +47,32 @@ bool identical_templates(const mesh::TemplatedMeshCompactSvb& t, std::size_t i, 
 /// std::invalid_argument naming the templates
 void merge_templates(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);
 
+/// Templates i and j congruent by an exact motion R (R(X_j) = X_i): R is solved over the
+/// rationals from j's first cell and each cell of i, corner to corner, and must be orthogonal
+/// (A^T A = I exactly) and send every vertex of j exactly onto a distinct vertex of i and every
+/// cell of j onto a cell of i. `vertex[v]` is the vertex of i that vertex v of j goes to;
+/// `identity` when R is the identity.
+struct TemplateCongruence {
+  std::vector<mesh::IndexType> vertex;
+  bool identity = false;
+};
+/// nullopt when no such R exists (also for non-simplicial templates or repeated vertices).
+/// \pre i, j < t.templated.templates.size()
+std::optional<TemplateCongruence> template_congruence(const mesh::TemplatedMeshCompactSvb& t,
+                                                      std::size_t i, std::size_t j);
+/// Section 5.2.1, merging congruent templates: template j's instances join template i with the
+/// transformations T_{j,g} ∘ R^{-1} (composed over the rationals, each entry rounded once; a
+/// signed permutation with representable translations composes exactly), its identification
+/// tables renumbered by the vertex map, and j is removed as by merge_templates. AT keeps its cells
+/// and its identified vertices; its coordinates agree up to the rounding of the composed
+/// transformations.
+/// \pre t.is_valid(), i != j, both in range, template_congruence(t, i, j); else
+/// std::invalid_argument naming the templates
+void merge_congruent_templates(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);
+/// Merges every template into the first template congruent to it by an exact motion (identical
+/// ones included). Returns the number of templates merged away.
+/// \pre t.is_valid(), else std::invalid_argument
+std::size_t merge_congruent_templates(mesh::TemplatedMeshCompactSvb& t);
 /// Merges every template into the first template identical to it. Returns the number of
 /// templates merged away.
 /// \pre t.is_valid()

@@ -1,7 +1,7 @@
 // symmesh adapt IN.tmesh [--clone K]... [--split-where EXPR]... [--refine-where EXPR]... [--smooth
 // N] [--improve]
-//   [--delaunay] [--merge-identical] -o OUT.tmesh [--vtu OUT.vtu] [--report R.json] [--max-rounds
-//   N] [--quiet]
+//   [--delaunay] [--merge-identical] [--merge-congruent] -o OUT.tmesh [--vtu OUT.vtu] [--report
+//   R.json] [--max-rounds N] [--quiet]
 // Section 5.2 / Technique 5.8 on a generated templated mesh — spec/adaptation.md#adapt-command
 #include "symmesh/adapt/templated_mesh_adaptation.h"
 #include "symmesh/adapt/tmesh_template_cloning.h"
@@ -25,7 +25,8 @@ struct AdaptOptions {
   std::vector<std::string> refine_where, split_where;
   std::vector<std::size_t> clone; ///< instances, numbered as in the input
   std::size_t smooth = 0, max_rounds = 64, improve_rounds = 8;
-  bool delaunay = false, improve = false, merge_identical = false, quiet = false;
+  bool delaunay = false, improve = false, merge_identical = false, merge_congruent = false,
+       quiet = false;
 };
 
 std::string extension(const std::string& path) {
@@ -48,10 +49,10 @@ bool options_ok(const AdaptOptions& o) {
     return false;
   }
   if (!o.delaunay && !o.improve && o.smooth == 0 && o.refine_where.empty() && o.clone.empty() &&
-      o.split_where.empty() && !o.merge_identical) {
+      o.split_where.empty() && !o.merge_identical && !o.merge_congruent) {
     print_error("adapt: nothing to do: give --clone K, --split-where, --refine-where, --smooth N, "
                 "--improve, "
-                "--delaunay or --merge-identical");
+                "--delaunay, --merge-identical or --merge-congruent");
     return false;
   }
   return true;
@@ -183,14 +184,22 @@ int run_adapt(const AdaptOptions& o) {
       say("delaunay: " + std::to_string(r.flips) + " flips, " + std::to_string(r.bisections) +
           " interface edges bisected in " + std::to_string(r.rounds) + " rounds");
     }
-    if (o.merge_identical) {
+    // Section 5.2.1 merges, each reported as its step and a progress line.
+    const auto merge_step = [&](const std::string& option, const std::string& key, auto merge) {
       const auto before_merge = t.templated.templates.size();
-      const auto n = adapt::merge_identical_templates(t);
-      steps.push_back({{"merge_identical", n}, {"templates", t.templated.templates.size()}});
-      say("merge-identical: " + std::to_string(n) + " templates merged (" +
-          std::to_string(before_merge) + " -> " + std::to_string(t.templated.templates.size()) +
-          ")");
-    }
+      const std::size_t n = merge(t);
+      steps.push_back({{key, n}, {"templates", t.templated.templates.size()}});
+      say(option + ": " + std::to_string(n) + " templates merged (" + std::to_string(before_merge) +
+          " -> " + std::to_string(t.templated.templates.size()) + ")");
+    };
+    if (o.merge_identical)
+      merge_step("merge-identical", "merge_identical", [](mesh::TemplatedMeshCompactSvb& m) {
+        return adapt::merge_identical_templates(m);
+      });
+    if (o.merge_congruent)
+      merge_step("merge-congruent", "merge_congruent", [](mesh::TemplatedMeshCompactSvb& m) {
+        return adapt::merge_congruent_templates(m);
+      });
     std::ostringstream why;
     if (!t.is_valid(&why)) throw std::logic_error("the adapted mesh is not valid: " + why.str());
     const auto cert = adapt::certify_conformity(t, input.boundary_measure);
@@ -242,8 +251,8 @@ void add_adapt(CLI::App& app, int& exit_code) {
       "bisect the longest edge of cells that match --refine-where, smooth vertices (boundary "
       "vertices inside their patch, with their related copies), improve quality by smoothing and "
       "flips, and make it Delaunay (Technique 5.8); --clone first gives instances their own "
-      "template, --split-where then splits templates along a cell set, --merge-identical last "
-      "merges identical templates (Section 5.2.1). Steps run "
+      "template, --split-where then splits templates along a cell set, --merge-identical and "
+      "--merge-congruent last merge identical or congruent templates (Section 5.2.1). Steps run "
       "in that order; every instance of a template changes alike, so the mesh "
       "stays templated and symmetric, and the result is certified conforming before it is "
       "written.");
@@ -281,6 +290,11 @@ void add_adapt(CLI::App& app, int& exit_code) {
   cmd->add_flag("--merge-identical", o->merge_identical,
                 "last step: merge templates that are identical (the same coordinates and cells) "
                 "into one, their instances together (Section 5.2.1)");
+  cmd->add_flag("--merge-congruent", o->merge_congruent,
+                "last step (after --merge-identical): merge templates congruent by an exact motion "
+                "R (R(X_j) = X_i with the coordinates taken exactly: translations, mirrors, signed "
+                "permutations; no tolerance) into one, the merged instances' transformations "
+                "composed with R^-1 (Section 5.2.1)");
   cmd->add_option(
          "--max-rounds", o->max_rounds,
          "Technique 5.8: rounds of interface insertions before giving up (exit 1); 0 = flips only")
