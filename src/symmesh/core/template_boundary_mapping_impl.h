@@ -25,6 +25,7 @@
 #include <deque>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -111,6 +112,32 @@ std::vector<PointVec<FT, D>> boundary_facets(const ElementComplex<FT, D>& m) {
   return out;
 }
 
+/// Two triangles that share exactly one edge meet in that edge when they are not coplanar, or
+/// when they are and lie on opposite sides of it: decided by predicates and exact point
+/// equality, without constructions. Neighbouring copies' boundary triangles meet like this
+/// along their interfaces. nullopt when the triangles are otherwise placed (CGAL decides).
+template <class FT>
+std::optional<PointVec<FT, 3>> shared_edge_meet(const PointVec<FT, 3>& a,
+                                                const PointVec<FT, 3>& b) {
+  using K = KernelOf<FT>;
+  using P = typename K::Point_3;
+  int in_b[3] = {-1, -1, -1}, shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3 && in_b[i] < 0; ++j)
+      if (a[std::size_t(i)] == b[std::size_t(j)]) in_b[i] = j, ++shared;
+  if (shared != 2) return std::nullopt;
+  const int a_apex = in_b[0] < 0 ? 0 : in_b[1] < 0 ? 1 : 2;
+  const int b_apex = 3 - in_b[(a_apex + 1) % 3] - in_b[(a_apex + 2) % 3];
+  const auto cg = [](const Point<FT, 3>& p) { return P(p[0], p[1], p[2]); };
+  const P e0 = cg(a[std::size_t((a_apex + 1) % 3)]), e1 = cg(a[std::size_t((a_apex + 2) % 3)]);
+  const P pa = cg(a[std::size_t(a_apex)]), pb = cg(b[std::size_t(b_apex)]);
+  if (CGAL::collinear(e0, e1, pa) || CGAL::collinear(e0, e1, pb)) return std::nullopt;
+  if (CGAL::orientation(e0, e1, pa, pb) == CGAL::COPLANAR &&
+      CGAL::coplanar_orientation(e0, e1, pa, pb) != CGAL::NEGATIVE)
+    return std::nullopt;
+  return PointVec<FT, 3>{a[std::size_t((a_apex + 1) % 3)], a[std::size_t((a_apex + 2) % 3)]};
+}
+
 template <class FT, int D>
 void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
                       std::vector<DomainPiece<FT, D>>& out) {
@@ -141,8 +168,15 @@ void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
       q[2] = p.z();
       return q;
     };
+    if (const auto edge = shared_edge_meet<FT>(a, b)) {
+      out.push_back({*edge});
+      return;
+    }
     const typename K::Triangle_3 ta(cg(a[0]), cg(a[1]), cg(a[2]));
     const typename K::Triangle_3 tb(cg(b[0]), cg(b[1]), cg(b[2]));
+    // Predicates first: CGAL's intersection constructs edge crossings (divisions, costly over
+    // K_m) before it knows that there are none.
+    if (!CGAL::do_intersect(ta, tb)) return;
     const auto r = CGAL::intersection(ta, tb);
     if (!r) return;
     if (const P* p = boost::get<P>(&*r))
@@ -195,23 +229,33 @@ std::vector<DomainPiece<FT, D>> geometry_interface_pieces(
   return out;
 }
 
-/// The pieces in the coordinates of the instance with world facets `world` (the instance's
-/// transformation applied to `local`, facet for facet): a piece vertex that is a facet end of
-/// that instance becomes the template's own point (no arithmetic, and later comparisons with it
-/// are by identity), any other is mapped by `t_inverse`.
+/// The pieces in the coordinates of the instance whose facets are `seen` where the pieces were
+/// found (`local` moved there, facet for facet): a piece vertex that is a facet end of that
+/// instance becomes the template's own point (no arithmetic, and later comparisons with it are by
+/// identity), any other is mapped by `back` (none: the pieces were found in `local` itself).
 template <class FT, int D>
 std::vector<DomainPiece<FT, D>>
-pull_back(const std::vector<DomainPiece<FT, D>>& pieces, const std::vector<PointVec<FT, D>>& world,
-          const std::vector<PointVec<FT, D>>& local, const RigidTransformation<FT, D>& t_inverse) {
+pull_back(const std::vector<DomainPiece<FT, D>>& pieces, const std::vector<PointVec<FT, D>>& seen,
+          const std::vector<PointVec<FT, D>>& local, const RigidTransformation<FT, D>* back) {
   auto out = pieces;
   for (auto& p : out)
     for (auto& v : p.vertices) {
       const Point<FT, D>* same = nullptr;
-      for (std::size_t k = 0; k < world.size() && !same; ++k)
-        for (std::size_t j = 0; j < world[k].size() && !same; ++j)
-          if (world[k][j] == v) same = &local[k][j];
-      v = same ? *same : t_inverse(v);
+      for (std::size_t k = 0; k < seen.size() && !same; ++k)
+        for (std::size_t j = 0; j < seen[k].size() && !same; ++j)
+          if (seen[k][j] == v) same = &local[k][j];
+      if (same)
+        v = *same;
+      else if (back)
+        v = (*back)(v);
     }
+  return out;
+}
+
+template <class FT, int D>
+std::vector<EnclosingBox<FT, D>> facet_enclosures(const std::vector<PointVec<FT, D>>& facets) {
+  std::vector<EnclosingBox<FT, D>> out;
+  for (const auto& s : facets) out.push_back(enclosure<FT, D>(s));
   return out;
 }
 
@@ -234,27 +278,20 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_f
   // Instances and their world boundary facets only: identifying equal world points as AT
   // (apply_template) does would decide every shared coordinate exactly, for nothing here.
   const auto ids = x.instance_ids();
-  std::vector<std::vector<PointVec<FT, D>>> facets; // per instance, world coordinates
   std::vector<std::vector<PointVec<FT, D>>> template_facets;
   // Boxes are certified enclosures (intervals): filters that never decide a shared coordinate
   // exactly; the segment intersections decide.
   std::vector<EnclosingBox<FT, D>> instance_box;
-  std::vector<std::vector<EnclosingBox<FT, D>>> facet_boxes;
-  std::vector<RigidTransformation<FT, D>> inverse; // T^{-1} per instance, once
-  for (const auto& t : x.templates) template_facets.push_back(boundary_facets(t.mesh));
+  std::vector<std::vector<EnclosingBox<FT, D>>> template_boxes;
+  for (const auto& t : x.templates) {
+    template_facets.push_back(boundary_facets(t.mesh));
+    template_boxes.push_back(facet_enclosures<FT, D>(template_facets.back()));
+  }
   for (auto id : ids) {
-    inverse.push_back(x.tf(id).inverse());
-    auto f = template_facets[id.i];
     PointVec<FT, D> ends;
-    for (auto& s : f)
-      for (auto& p : s) {
-        p = x.tf(id)(p);
-        ends.push_back(p);
-      }
+    for (const auto& s : template_facets[id.i])
+      for (const auto& p : s) ends.push_back(x.tf(id)(p));
     instance_box.push_back(enclosure<FT, D>(ends));
-    facet_boxes.emplace_back();
-    for (const auto& s : f) facet_boxes.back().push_back(enclosure<FT, D>(s));
-    facets.push_back(std::move(f));
   }
   // interf_geo = bnd ∩ bnd for non-overlapping instances, so two instances are neighbours iff
   // some two boundary facets meet; this avoids the cell-pair tests of neighbouring_instances.
@@ -267,19 +304,27 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_f
   std::size_t decided = 0;
   for (const auto& [a, b] : candidates) {
     if (on_progress) on_progress(decided++, candidates.size());
-    const auto pieces =
-        geometry_interface_pieces<FT, D>(facets[a], facet_boxes[a], facets[b], facet_boxes[b]);
-    if (pieces.empty()) continue;
     const auto ia = ids[a], ib = ids[b];
     TemplateBoundaryMapping<FT, D> ab, ba;
     ab.to = ia;
     ab.from = ib;
     ab.map = x.tf(ia).inverse() * x.tf(ib);
-    ab.domain = pull_back<FT, D>(pieces, facets[b], template_facets[ib.i], inverse[b]);
     ba.to = ib;
     ba.from = ia;
     ba.map = ab.map.inverse(); // = T_b^{-1} ∘ T_a exactly; a transpose, not a product
-    ba.domain = pull_back<FT, D>(pieces, facets[a], template_facets[ia.i], inverse[a]);
+    // interf_geo is found in b's own coordinates, with a's facets moved there by T_b^{-1} ∘ T_a:
+    // where neighbouring copies meet on a face of b's template, that face keeps its exact
+    // template coordinates (rational on a slice's starting half-plane, where world coordinates
+    // are the rotation's cyclotomic images), and the predicates there, degenerate and so decided
+    // exactly, are cheap. The pieces are the same points as in world coordinates.
+    auto a_in_b = template_facets[ia.i];
+    for (auto& f : a_in_b)
+      for (auto& p : f) p = ba.map(p);
+    const auto pieces = geometry_interface_pieces<FT, D>(
+        a_in_b, facet_enclosures<FT, D>(a_in_b), template_facets[ib.i], template_boxes[ib.i]);
+    if (pieces.empty()) continue;
+    ab.domain = pull_back<FT, D>(pieces, template_facets[ib.i], template_facets[ib.i], nullptr);
+    ba.domain = pull_back<FT, D>(pieces, a_in_b, template_facets[ia.i], &ab.map);
     ab.inverse = out.size() + 1;
     ba.inverse = out.size();
     out.push_back(std::move(ab));
