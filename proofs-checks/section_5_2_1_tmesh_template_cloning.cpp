@@ -102,6 +102,17 @@ std::optional<adapt::TemplateEdge> interior_edge(const mesh::TemplatedMeshCompac
   return std::nullopt;
 }
 
+/// Clones the template of a random instance (box grids have one, instanced at least twice);
+/// returns that template and where the clone went.
+std::pair<std::size_t, adapt::ClonedInstance>
+clone_random_instance(mesh::TemplatedMeshCompactSvb& t) {
+  const auto instance = std::size_t(*rc::gen::inRange<int>(0, int(t.templated.instance_count())));
+  std::size_t original = 0;
+  for (std::size_t k = instance; k >= t.templated.templates[original].instance_count();)
+    k -= t.templated.templates[original++].instance_count();
+  return {original, adapt::clone_template(t, instance)};
+}
+
 void clone_and_merge(const boxes::BoxInput& g, bool change_clone, bool identical_only) {
   const std::string text = g.description();
   const auto failure = [&] { return text; };
@@ -110,13 +121,7 @@ void clone_and_merge(const boxes::BoxInput& g, bool change_clone, bool identical
   const auto before = record_of(t);
   const auto templates = t.templated.templates.size();
   const auto n = t.templated.instance_count();
-  const auto instance = std::size_t(*rc::gen::inRange<int>(0, int(n)));
-  // The template of `instance` (box grids have one, instanced at least twice).
-  std::size_t original = 0;
-  for (std::size_t k = instance; k >= t.templated.templates[original].instance_count();)
-    k -= t.templated.templates[original++].instance_count();
-
-  const auto clone = adapt::clone_template(t, instance);
+  const auto [original, clone] = clone_random_instance(t);
   RC_TAG(t.identifications.empty() ? "no identifications" : "identifications follow");
   SYMMESH_PROOF_ASSERT(clone.template_index == templates && clone.instance == n - 1, failure,
                        no_picture);
@@ -223,11 +228,7 @@ void merge_moved_clone(const boxes::BoxInput& g, bool change_clone, bool by_cong
   auto t = g.generate();
   const auto before = record_of(t);
   const auto templates = t.templated.templates.size();
-  const auto instance = std::size_t(*rc::gen::inRange<int>(0, int(t.templated.instance_count())));
-  std::size_t original = 0;
-  for (std::size_t k = instance; k >= t.templated.templates[original].instance_count();)
-    k -= t.templated.templates[original++].instance_count();
-  const auto clone = adapt::clone_template(t, instance);
+  const auto [original, clone] = clone_random_instance(t);
   move_template(t, clone.template_index);
   SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
   RC_TAG(adapt::identical_templates(t, original, clone.template_index) ? "R = identity"
@@ -315,38 +316,34 @@ rc::Gen<boxes::BoxInput> split_input(int d) {
 } // namespace
 
 void register_section_5_2_1_tmesh(std::vector<Property>& p) {
-  for (int d : {2, 3})
-    p.push_back({kClaim, "tmesh_clone_merge_keep_the_structure_instance_" + std::to_string(d) + "d",
-                 d, Kind::holds,
-                 "Section 5.2.1 on generated box grids: cloning a random instance's template "
-                 "(tables following it) and merging identical templates back keep AT, cell for "
-                 "cell, certified; a clone changed inside is not merged",
-                 [d] {
-                   return rc::detail::toProperty([d] {
-                     clone_and_merge(*boxes::box_grid(d), *rc::gen::arbitrary<bool>(), true);
-                   });
-                 },
-                 [d] {
-                   return rc::detail::toProperty(
-                       [d] { clone_and_merge(*boxes::box_grid(d), true, false); });
-                 }});
-  for (int d : {2, 3})
-    p.push_back({kClaim,
-                 "tmesh_merge_congruent_keeps_the_structure_instance_" + std::to_string(d) + "d", d,
-                 Kind::holds,
-                 "Section 5.2.1 on generated box grids: a clone moved by a random signed "
-                 "permutation (renumbered, its instance's transformation composed with the "
-                 "inverse) is found congruent exactly and merged back with AT unchanged, cell for "
-                 "cell, certified; a moved clone changed inside is refused",
-                 [d] {
-                   return rc::detail::toProperty([d] {
-                     merge_moved_clone(*boxes::box_grid(d), *rc::gen::arbitrary<bool>(), true);
-                   });
-                 },
-                 [d] {
-                   return rc::detail::toProperty(
-                       [d] { merge_moved_clone(*boxes::box_grid(d), false, false); });
-                 }});
+  // Clone-then-merge claims on box grids: `check(g, changed, checked)` with a random changed flag
+  // holds; merged unchecked (the dropped hypothesis), the clone changed or not as `dropped`
+  // says, it must fail.
+  const auto on_box_grids = [&p](const std::string& name, const std::string& text,
+                                 void (*check)(const boxes::BoxInput&, bool, bool), bool dropped) {
+    for (int d : {2, 3})
+      p.push_back({kClaim, name + "_" + std::to_string(d) + "d", d, Kind::holds, text,
+                   [d, check] {
+                     return rc::detail::toProperty([d, check] {
+                       check(*boxes::box_grid(d), *rc::gen::arbitrary<bool>(), true);
+                     });
+                   },
+                   [d, check, dropped] {
+                     return rc::detail::toProperty(
+                         [d, check, dropped] { check(*boxes::box_grid(d), dropped, false); });
+                   }});
+  };
+  on_box_grids("tmesh_clone_merge_keep_the_structure_instance",
+               "Section 5.2.1 on generated box grids: cloning a random instance's template "
+               "(tables following it) and merging identical templates back keep AT, cell for "
+               "cell, certified; a clone changed inside is not merged",
+               clone_and_merge, true);
+  on_box_grids("tmesh_merge_congruent_keeps_the_structure_instance",
+               "Section 5.2.1 on generated box grids: a clone moved by a random signed "
+               "permutation (renumbered, its instance's transformation composed with the "
+               "inverse) is found congruent exactly and merged back with AT unchanged, cell for "
+               "cell, certified; a moved clone changed inside is refused",
+               merge_moved_clone, false);
   for (int d : {2, 3})
     p.push_back(
         {kClaim, "tmesh_split_keeps_the_structure_instance_" + std::to_string(d) + "d", d,
