@@ -43,40 +43,14 @@ using symmesh::proofs::boxes::BoxInput;
 /// The geometry from bytes 0-5, in the ranges of the property's generators (box_grid,
 /// block_on_base).
 BoxInput geometry_of(const std::uint8_t* b) {
-  BoxInput in;
-  in.dimension = 3;
-  const std::vector<int> origin{0, 0, 0};
-  if (b[0] & 1) { // a block on a base slab
-    const int base2 = 4 + b[1] % 3, height2 = 1 + b[2] % 2;
-    in.boxes.push_back({{0, base2, 0, base2, 0, height2}, {{origin, false}}});
-    in.boxes.push_back(
-        {{0, 2 + b[3] % 3, 0, 2 + b[4] % 3, height2, height2 + 1 + b[5] % 3}, {{origin, false}}});
-    in.size = 0.7 + 0.05 * (b[0] / 2 % 3);
-    return in;
-  }
-  BoxInput::Box box;
-  int shortest = 4;
-  for (int i = 0; i < 3; ++i) {
-    const int side2 = 2 + b[1 + i] % 3;
-    box.twice.push_back(0);
-    box.twice.push_back(side2);
-    shortest = std::min(shortest, side2);
-  }
-  int nx = 1 + b[4] % 3;
-  const int ny = 1 + b[4] / 3 % 2, nz = 1 + b[4] / 6 % 2;
-  if (nx * ny * nz == 1) nx = 2; // at least two instances
-  const bool mirrored = b[0] & 2;
-  for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j)
-      for (int k = 0; k < nz; ++k) {
-        // x -> (i+1)a - x maps [0,a] onto [ia, (i+1)a].
-        const bool m = mirrored && i % 2;
-        box.instances.push_back(
-            {{(m ? i + 1 : i) * box.twice[1], j * box.twice[3], k * box.twice[5]}, m});
-      }
-  in.boxes.push_back(box);
-  in.size = 0.5 * shortest / (1 + b[5] % 2);
-  return in;
+  namespace boxes = symmesh::proofs::boxes;
+  if (b[0] & 1)
+    return boxes::block_on_base_of(3, 4 + b[1] % 3, 1 + b[2] % 2, 2 + b[3] % 3, 2 + b[4] % 3,
+                                   1 + b[5] % 3, b[0] / 2 % 3);
+  std::vector<int> counts{1 + b[4] % 3, 1 + b[4] / 3 % 2, 1 + b[4] / 6 % 2};
+  if (counts[0] * counts[1] * counts[2] == 1) counts[0] = 2; // at least two instances
+  return boxes::grid_of_boxes(3, {2 + b[1] % 3, 2 + b[2] % 3, 2 + b[3] % 3}, counts, b[0] & 2,
+                              1 + b[5] % 2);
 }
 
 struct Seed {

@@ -107,6 +107,33 @@ struct BoxInput {
   }
 };
 
+/// A grid of boxes with sides sides2[i] / 2, counts[i] along axis i (counts[2] ignored in 2D),
+/// one template instanced by translations, or every odd column along x the mirror image of its
+/// neighbour; size: half the shortest side over `divisor`.
+inline BoxInput grid_of_boxes(int dimension, const std::vector<int>& sides2,
+                              const std::vector<int>& counts, bool mirrored, int divisor) {
+  BoxInput in;
+  in.dimension = dimension;
+  BoxInput::Box b;
+  for (int i = 0; i < dimension; ++i) {
+    b.twice.push_back(0);
+    b.twice.push_back(sides2[std::size_t(i)]);
+  }
+  const int ny = counts[1], nz = dimension == 3 ? counts[2] : 1;
+  for (int i = 0; i < counts[0]; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) {
+        // x -> (i+1)a - x maps [0,a] onto [ia, (i+1)a].
+        const bool m = mirrored && i % 2;
+        std::vector<int> shift{(m ? i + 1 : i) * sides2[0], j * sides2[1]};
+        if (dimension == 3) shift.push_back(k * sides2[2]);
+        b.instances.push_back({shift, m});
+      }
+  in.boxes.push_back(b);
+  in.size = 0.5 * *std::min_element(sides2.begin(), sides2.begin() + dimension) / divisor;
+  return in;
+}
+
 /// A grid of boxes with sides 1, 3/2 or 2: 1-3 along x, 1-2 along the other axes, at least two,
 /// one template instanced by translations, or every odd column along x the mirror image of its
 /// neighbour. Convex. Size: the shortest side or half of it.
@@ -115,26 +142,7 @@ inline rc::Gen<BoxInput> box_grid(int dimension) {
       rc::gen::apply(
           [dimension](std::vector<int> sides2, std::vector<int> counts, bool mirrored,
                       int divisor) {
-            BoxInput in;
-            in.dimension = dimension;
-            BoxInput::Box b;
-            for (int i = 0; i < dimension; ++i) {
-              b.twice.push_back(0);
-              b.twice.push_back(sides2[std::size_t(i)]);
-            }
-            const int ny = counts[1], nz = dimension == 3 ? counts[2] : 1;
-            for (int i = 0; i < counts[0]; ++i)
-              for (int j = 0; j < ny; ++j)
-                for (int k = 0; k < nz; ++k) {
-                  // x -> (i+1)a - x maps [0,a] onto [ia, (i+1)a].
-                  const bool m = mirrored && i % 2;
-                  std::vector<int> shift{(m ? i + 1 : i) * sides2[0], j * sides2[1]};
-                  if (dimension == 3) shift.push_back(k * sides2[2]);
-                  b.instances.push_back({shift, m});
-                }
-            in.boxes.push_back(b);
-            in.size = 0.5 * *std::min_element(sides2.begin(), sides2.begin() + dimension) / divisor;
-            return in;
+            return grid_of_boxes(dimension, sides2, counts, mirrored, divisor);
           },
           rc::gen::container<std::vector<int>>(3, rc::gen::inRange(2, 5)),
           rc::gen::apply(
@@ -148,25 +156,31 @@ inline rc::Gen<BoxInput> box_grid(int dimension) {
 
 /// A block on a base slab (two templates, instanced once), the block's bottom covering a corner
 /// part of the base's top side: a T-junction of the boundary patches, a non-convex union; size
-/// 0.7-0.8. Meshed independently, the cells along the partly shared side do not match: made
-/// Delaunay inside each template they still leave interface facets that are not template-aware
-/// locally Delaunay (in 3D).
+/// 0.7 + 0.05 size_step. Meshed independently, the cells along the partly shared side do not
+/// match: made Delaunay inside each template they still leave interface facets that are not
+/// template-aware locally Delaunay (in 3D). Lengths are twice their value.
+inline BoxInput block_on_base_of(int dimension, int base2, int height2, int block_x2, int block_y2,
+                                 int block_h2, int size_step) {
+  BoxInput in;
+  in.dimension = dimension;
+  const std::vector<int> origin(std::size_t(dimension), 0);
+  if (dimension == 2) {
+    in.boxes.push_back({{0, base2, 0, height2}, {{origin, false}}});
+    in.boxes.push_back({{0, block_x2, height2, height2 + block_h2}, {{origin, false}}});
+  } else {
+    in.boxes.push_back({{0, base2, 0, base2, 0, height2}, {{origin, false}}});
+    in.boxes.push_back(
+        {{0, block_x2, 0, block_y2, height2, height2 + block_h2}, {{origin, false}}});
+  }
+  in.size = 0.7 + 0.05 * size_step;
+  return in;
+}
+
+/// block_on_base_of with base 2-3, height 1/2-1, block 1-2 by 1-2 by 1/2-3/2, size 0.7-0.8.
 inline rc::Gen<BoxInput> block_on_base(int dimension) {
   return rc::gen::apply(
       [dimension](int base2, int height2, int block_x2, int block_y2, int block_h2, int size_step) {
-        BoxInput in;
-        in.dimension = dimension;
-        const std::vector<int> origin(std::size_t(dimension), 0);
-        if (dimension == 2) {
-          in.boxes.push_back({{0, base2, 0, height2}, {{origin, false}}});
-          in.boxes.push_back({{0, block_x2, height2, height2 + block_h2}, {{origin, false}}});
-        } else {
-          in.boxes.push_back({{0, base2, 0, base2, 0, height2}, {{origin, false}}});
-          in.boxes.push_back(
-              {{0, block_x2, 0, block_y2, height2, height2 + block_h2}, {{origin, false}}});
-        }
-        in.size = 0.7 + 0.05 * size_step;
-        return in;
+        return block_on_base_of(dimension, base2, height2, block_x2, block_y2, block_h2, size_step);
       },
       rc::gen::inRange(4, 7), rc::gen::inRange(1, 3), rc::gen::inRange(2, 5),
       rc::gen::inRange(2, 5), rc::gen::inRange(1, 4), rc::gen::inRange(0, 3));
