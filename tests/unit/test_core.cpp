@@ -158,6 +158,58 @@ TEST(Predicates, PlaneBarycentricCoordinatesReproduceThePoint) {
   EXPECT_GT(off_line, 100);
 }
 
+// point_in_simplex decides triangles and tetrahedra by orientation signs (no division); the
+// barycentric coordinates (all >= 0) are the independent definition it must agree with. Small
+// grids make points on edges, faces and vertices frequent.
+template <int D>
+void expect_point_in_simplex_agrees(std::size_t vertices, unsigned seed, int* inside,
+                                    int* on_boundary, int* outside) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coord(-2, 2);
+  const auto point = [&] {
+    Point<Exact, D> p;
+    for (int d = 0; d < D; ++d) p[d] = Exact(coord(rng));
+    return p;
+  };
+  for (int k = 0; k < 3000; ++k) {
+    std::vector<Point<Exact, D>> b;
+    for (std::size_t i = 0; i < vertices; ++i) b.push_back(point());
+    if (!affinely_independent<Exact, D>(b)) continue;
+    Point<Exact, D> x = point();
+    if (k % 3 == 0) // a point of an edge or of a face, exactly
+      for (int d = 0; d < D; ++d) x[d] = (b[0][d] + b[1][d] + (k % 2 ? b[2][d] : b[1][d])) / 3;
+    if (k % 3 == 1) { // the centroid: inside
+      for (int d = 0; d < D; ++d) {
+        x[d] = Exact(0);
+        for (const auto& v : b) x[d] += v[d];
+        x[d] /= int(b.size());
+      }
+    }
+    const auto mu = barycentric<Exact, D>(b, x);
+    bool by_mu = mu.has_value();
+    bool zero = false;
+    if (mu)
+      for (const auto& m : *mu) by_mu = by_mu && m >= 0, zero = zero || m == 0;
+    ASSERT_TRUE((detail::point_in_simplex_by_signs<Exact, D>(b, x).has_value()));
+    EXPECT_EQ((point_in_simplex<Exact, D>(b, x)), by_mu) << "case " << k;
+    (!by_mu ? *outside : zero ? *on_boundary : *inside) += 1;
+  }
+}
+
+TEST(Predicates, PointInSimplexBySignsAgreesWithBarycentricCoordinates) {
+  for (const auto& [d, n] : {std::pair{2, 3}, std::pair{3, 3}, std::pair{3, 4}}) {
+    int inside = 0, on_boundary = 0, outside = 0;
+    if (d == 2)
+      expect_point_in_simplex_agrees<2>(std::size_t(n), 11, &inside, &on_boundary, &outside);
+    else
+      expect_point_in_simplex_agrees<3>(std::size_t(n), 13 + unsigned(n), &inside, &on_boundary,
+                                        &outside);
+    EXPECT_GT(inside, 20) << d << "D, " << n << " vertices";
+    EXPECT_GT(on_boundary, 20) << d << "D, " << n << " vertices";
+    EXPECT_GT(outside, 20) << d << "D, " << n << " vertices";
+  }
+}
+
 // The plane fast paths for points, segments and triangles against the general decision.
 TEST(Predicates, PlaneSimplexPairsAgreeWithTheGeneralDecision) {
   std::mt19937 rng(20261123);

@@ -274,6 +274,17 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
         if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) cdt.insert(proj(p));
       for (const auto& [a, b] : cuts.segments) {
         if (!tb.overlaps(box_of<FT, 3>({a, b}))) continue;
+        // A cut along an edge of the triangle is that edge; one that leaves the triangle's plane
+        // from a vertex meets it only there (already a vertex): predicates, no construction.
+        const bool a_corner = std::find(tri.begin(), tri.end(), a) != tri.end();
+        const bool b_corner = std::find(tri.begin(), tri.end(), b) != tri.end();
+        if (a_corner && b_corner) {
+          cdt.insert_constraint(proj(a), proj(b));
+          continue;
+        }
+        if ((a_corner || b_corner) && CGAL::orientation(cg(tri[0]), cg(tri[1]), cg(tri[2]),
+                                                        cg(a_corner ? b : a)) != CGAL::COPLANAR)
+          continue;
         const auto r = CGAL::intersection(typename K::Segment_3(cg(a), cg(b)), t3);
         if (!r) continue;
         if (const P3* p = boost::get<P3>(&*r))

@@ -155,9 +155,62 @@ bool point_on_segment(const Point<FT, D>& p, const Point<FT, D>& q, const Point<
   return t >= 0 && t <= dot<FT, D>(d, d);
 }
 
+namespace detail {
+/// x ∈ conv(b) by signs of products of differences, without a division: over K_m a division is
+/// an inverse in the field (an extended Euclid on polynomials), and at the interfaces the signs
+/// are zero, so decided exactly. b is a triangle or a tetrahedron (in 2D: a triangle) with
+/// affinely independent vertices; nullopt for every other case (barycentric decides).
+template <class FT, int D>
+std::optional<bool> point_in_simplex_by_signs(const std::vector<Point<FT, D>>& b,
+                                              const Point<FT, D>& x) {
+  if constexpr (D == 2) {
+    if (b.size() != 3) return std::nullopt;
+    const FT o = cross_2<FT>(b[1] - b[0], b[2] - b[0]);
+    if (o == 0) return std::nullopt;
+    const bool positive = o > 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const FT s = cross_2<FT>(b[(i + 1) % 3] - b[i], x - b[i]);
+      if (positive ? s < 0 : s > 0) return false;
+    }
+    return true;
+  } else if constexpr (D == 3) {
+    if (b.size() == 3) {
+      // In the triangle's plane, e_i × (x − b_i) = λ_i n with λ_i ≥ 0 exactly when x is on the
+      // inner side of edge i; n · (λ_i n) = λ_i |n|² has λ_i's sign.
+      const Point<FT, 3> n = cross<FT>(b[1] - b[0], b[2] - b[0]);
+      if (n == zero_point<FT, 3>()) return std::nullopt;
+      if (dot<FT, 3>(n, x - b[0]) != 0) return false;
+      for (std::size_t i = 0; i < 3; ++i)
+        if (dot<FT, 3>(n, cross<FT>(b[(i + 1) % 3] - b[i], x - b[i])) < 0) return false;
+      return true;
+    }
+    if (b.size() == 4) {
+      // x replaces one vertex at a time; inside iff no orientation has the opposite sign.
+      const auto orient = [](const Point<FT, 3>& p, const Point<FT, 3>& q, const Point<FT, 3>& r,
+                             const Point<FT, 3>& s) {
+        return dot<FT, 3>(q - p, cross<FT>(r - p, s - p));
+      };
+      const FT o = orient(b[0], b[1], b[2], b[3]);
+      if (o == 0) return std::nullopt;
+      const bool positive = o > 0;
+      for (std::size_t i = 0; i < 4; ++i) {
+        std::array<Point<FT, 3>, 4> c{b[0], b[1], b[2], b[3]};
+        c[i] = x;
+        const FT s = orient(c[0], c[1], c[2], c[3]);
+        if (positive ? s < 0 : s > 0) return false;
+      }
+      return true;
+    }
+  }
+  return std::nullopt;
+}
+} // namespace detail
+
 /// x ∈ conv(b) for an affinely independent b.
 template <class FT, int D>
 bool point_in_simplex(const std::vector<Point<FT, D>>& b, const Point<FT, D>& x) {
+  if (const auto by_signs = detail::point_in_simplex_by_signs<FT, D>(b, x)) return *by_signs;
+  if (b.size() == 2 && !(b[0] == b[1])) return point_on_segment<FT, D>(b[0], b[1], x);
   auto mu = barycentric<FT, D>(b, x);
   if (!mu) return false;
   for (const auto& v : *mu)

@@ -138,6 +138,59 @@ std::optional<PointVec<FT, 3>> shared_edge_meet(const PointVec<FT, 3>& a,
   return PointVec<FT, 3>{a[std::size_t((a_apex + 1) % 3)], a[std::size_t((a_apex + 2) % 3)]};
 }
 
+/// Two triangles that share exactly one vertex v meet only in v when (not coplanar) the far
+/// vertices of one lie strictly on one side of the other's plane, or (coplanar) the line of an
+/// edge at v has one triangle on its side and the other's far vertices strictly across it or on
+/// the line's opposite ray (two convex wedges at v that meet only in v are separated so; their
+/// triangles lie in them). Decided by predicates, without constructions: boundary triangles of
+/// neighbouring copies around a shared vertex meet like this. nullopt when not decided (CGAL
+/// decides).
+template <class FT>
+std::optional<Point<FT, 3>> shared_vertex_meet(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
+  using K = KernelOf<FT>;
+  using P = typename K::Point_3;
+  int ia = -1, ib = -1, shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (a[std::size_t(i)] == b[std::size_t(j)]) ia = i, ib = j, ++shared;
+  if (shared != 1) return std::nullopt;
+  const auto cg = [](const Point<FT, 3>& p) { return P(p[0], p[1], p[2]); };
+  const P v = cg(a[std::size_t(ia)]);
+  const P a1 = cg(a[std::size_t((ia + 1) % 3)]), a2 = cg(a[std::size_t((ia + 2) % 3)]);
+  const P b1 = cg(b[std::size_t((ib + 1) % 3)]), b2 = cg(b[std::size_t((ib + 2) % 3)]);
+  if (CGAL::collinear(v, a1, a2) || CGAL::collinear(v, b1, b2)) return std::nullopt;
+  // Not coplanar: when one triangle's far vertices lie strictly on one side of the other's
+  // plane, it meets that plane, and so the other triangle, only in v.
+  const auto sb1 = CGAL::orientation(v, a1, a2, b1), sb2 = CGAL::orientation(v, a1, a2, b2);
+  if (sb1 != CGAL::COPLANAR || sb2 != CGAL::COPLANAR) {
+    if (sb1 == sb2) return a[std::size_t(ia)];
+    const auto sa1 = CGAL::orientation(v, b1, b2, a1), sa2 = CGAL::orientation(v, b1, b2, a2);
+    if (sa1 != CGAL::COPLANAR && sa1 == sa2) return a[std::size_t(ia)];
+    return std::nullopt;
+  }
+  // The line through v and e, with the wedge's other end `own` on its positive side.
+  const auto separates = [&](const P& e, const P& own, const P& y1, const P& y2) {
+    for (const P* y : {&y1, &y2}) {
+      const auto side = CGAL::coplanar_orientation(v, e, own, *y);
+      if (side == CGAL::POSITIVE) return false;
+      if (side == CGAL::COLLINEAR && CGAL::angle(e, v, *y) != CGAL::OBTUSE) return false;
+    }
+    return true;
+  };
+  if (separates(a1, a2, b1, b2) || separates(a2, a1, b1, b2) || separates(b1, b2, a1, a2) ||
+      separates(b2, b1, a1, a2))
+    return a[std::size_t(ia)];
+  return std::nullopt;
+}
+
+/// a and b are the same triangle (their vertices equal exactly, in any order).
+template <class FT>
+bool same_vertex_set(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
+  for (const auto& p : a)
+    if (std::find(b.begin(), b.end(), p) == b.end()) return false;
+  return true;
+}
+
 template <class FT, int D>
 void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
                       std::vector<DomainPiece<FT, D>>& out) {
@@ -170,6 +223,16 @@ void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
     };
     if (const auto edge = shared_edge_meet<FT>(a, b)) {
       out.push_back({*edge});
+      return;
+    }
+    // The same triangle on both sides (neighbouring copies meet like this across their shared
+    // faces): it is the intersection, without CGAL's degenerate coplanar case analysis.
+    if (same_vertex_set<FT>(a, b)) {
+      out.push_back({convex_cyclic_order<FT>(a)});
+      return;
+    }
+    if (const auto vertex = shared_vertex_meet<FT>(a, b)) {
+      out.push_back({{*vertex}});
       return;
     }
     const typename K::Triangle_3 ta(cg(a[0]), cg(a[1]), cg(a[2]));
