@@ -176,7 +176,7 @@ void expect_point_in_simplex_agrees(std::size_t vertices, unsigned seed, int* in
     for (std::size_t i = 0; i < vertices; ++i) b.push_back(point());
     if (!affinely_independent<Exact, D>(b)) continue;
     Point<Exact, D> x = point();
-    if (k % 3 == 0) // a point of an edge or of a face, exactly
+    if (k % 3 == 0) // on an edge (k even) or in the plane of three vertices (k odd), exactly
       for (int d = 0; d < D; ++d) x[d] = (b[0][d] + b[1][d] + (k % 2 ? b[2][d] : b[1][d])) / 3;
     if (k % 3 == 1) { // the centroid: inside
       for (int d = 0; d < D; ++d) {

@@ -1,12 +1,13 @@
 // Definition 4.7's domains are found from boundary triangles that meet (interf_geo = bnd ∩ bnd,
 // spec/boundary-patches.md#def-4-7). Pairs that share vertices are decided by predicates
-// (shared_edge_meet, same_vertex_set, shared_vertex_meet) before CGAL's triangle intersection;
-// here each decision is compared with CGAL's intersection of the same triangles, the independent
+// (shared_edge_meet, same_vertex_set, shared_vertex_meet) before CGAL's triangle intersection,
+// and cuts at a triangle's corners (corner_cut) before CGAL's segment–triangle intersection; here
+// each decision is compared with CGAL's intersection of the same elements, the independent
 // definition, on small integer grids where coplanar and touching pairs are frequent.
 #include <gtest/gtest.h>
 
 #include "symmesh/core/kernel.h"
-#include "symmesh/core/template_boundary_mapping_impl.h"
+#include "symmesh/core/boundary_subdivision_impl.h"
 
 #include <random>
 
@@ -26,12 +27,11 @@ K::Triangle_3 triangle(const std::vector<P3>& t) {
 struct Grid {
   std::mt19937 rng;
   std::uniform_int_distribution<int> coord{-2, 2};
-  std::uniform_int_distribution<int> small{-2, 2};
   explicit Grid(unsigned seed) : rng(seed) {}
   P3 point() { return P3{{Exact(coord(rng)), Exact(coord(rng)), Exact(coord(rng))}}; }
   /// A point of t's plane: t0 + s (t1 − t0) + u (t2 − t0) with small integers s, u.
   P3 in_plane(const std::vector<P3>& t) {
-    const Exact s(small(rng)), u(small(rng));
+    const Exact s(coord(rng)), u(coord(rng));
     P3 p;
     for (int d = 0; d < 3; ++d) p[d] = t[0][d] + s * (t[1][d] - t[0][d]) + u * (t[2][d] - t[0][d]);
     return p;
@@ -43,10 +43,6 @@ struct Grid {
     }
   }
 };
-
-bool independent(const std::vector<P3>& t) {
-  return affinely_independent<Exact, 3>(t);
-}
 
 } // namespace
 
@@ -61,7 +57,7 @@ TEST(InterfacePieces, SharedVertexMeetIsCgalsIntersection) {
     const bool coplanar = k % 2 == 0;
     std::vector<P3> b{a[std::size_t(k % 3)], coplanar ? g.in_plane(a) : g.point(),
                       coplanar ? g.in_plane(a) : g.point()};
-    if (!independent(b)) continue;
+    if (!affinely_independent<Exact, 3>(b)) continue;
     int shared = 0;
     for (const auto& p : a) shared += std::find(b.begin(), b.end(), p) != b.end();
     if (shared != 1) continue;
@@ -93,7 +89,7 @@ TEST(InterfacePieces, SameTriangleIsItsIntersection) {
     const auto a = g.triangle();
     std::vector<P3> b{a[2], a[0], a[1]};
     if (k % 2) b[std::size_t(k % 3)] = g.in_plane(a);
-    if (!independent(b)) continue;
+    if (!affinely_independent<Exact, 3>(b)) continue;
     const bool fast = same_vertex_set<Exact>(a, b);
     const auto r = CGAL::intersection(triangle(a), triangle(b));
     ASSERT_TRUE(r.has_value());
@@ -111,4 +107,52 @@ TEST(InterfacePieces, SameTriangleIsItsIntersection) {
   }
   EXPECT_GT(same, 100);
   EXPECT_GT(different, 100);
+}
+
+// A cut from a corner: along an edge it is that edge, off the plane it meets the triangle only in
+// the corner, as CGAL's segment–triangle intersection finds; in the plane it is left to CGAL.
+TEST(InterfacePieces, CornerCutIsCgalsIntersection) {
+  Grid g(31);
+  int edge = 0, corner_only = 0, undecided = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const auto tri = g.triangle();
+    const P3 a = tri[std::size_t(k % 3)];
+    const P3 b = k % 4 == 0   ? tri[std::size_t((k + 1) % 3)]
+                 : k % 4 == 1 ? g.in_plane(tri)
+                              : g.point();
+    if (a == b) continue;
+    const auto r = CGAL::intersection(
+        K::Segment_3(K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2])), triangle(tri));
+    ASSERT_TRUE(r.has_value()); // a is a corner
+    switch (corner_cut<Exact>(tri, a, b)) {
+    case CornerCut::edge: {
+      const auto* s = boost::get<K::Segment_3>(&*r);
+      ASSERT_NE(s, nullptr) << "case " << k;
+      EXPECT_TRUE((s->source() == K::Point_3(a[0], a[1], a[2]) &&
+                   s->target() == K::Point_3(b[0], b[1], b[2])) ||
+                  (s->source() == K::Point_3(b[0], b[1], b[2]) &&
+                   s->target() == K::Point_3(a[0], a[1], a[2])))
+          << "case " << k;
+      ++edge;
+      break;
+    }
+    case CornerCut::corner_only: {
+      const auto* p = boost::get<K::Point_3>(&*r);
+      ASSERT_NE(p, nullptr) << "case " << k << ": the cut meets the triangle in more than a corner";
+      EXPECT_TRUE(*p == K::Point_3(a[0], a[1], a[2])) << "case " << k;
+      ++corner_only;
+      break;
+    }
+    case CornerCut::undecided:
+      EXPECT_EQ(CGAL::orientation(triangle(tri).vertex(0), triangle(tri).vertex(1),
+                                  triangle(tri).vertex(2), K::Point_3(b[0], b[1], b[2])),
+                CGAL::COPLANAR)
+          << "case " << k << ": only cuts in the plane are left to CGAL";
+      ++undecided;
+      break;
+    }
+  }
+  EXPECT_GT(edge, 100);
+  EXPECT_GT(corner_only, 100);
+  EXPECT_GT(undecided, 100);
 }

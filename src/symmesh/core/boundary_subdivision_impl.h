@@ -227,6 +227,25 @@ std::vector<std::vector<std::size_t>> flat_regions(const std::vector<PointVec<FT
   return regions;
 }
 
+enum class CornerCut { edge, corner_only, undecided };
+
+/// How a cut segment [a, b] meets a boundary triangle, where predicates decide it without a
+/// construction: along an edge of the triangle (both ends are its corners: the edge), or only in
+/// a corner (one end is a corner and the other lies off the triangle's plane). Anything else is
+/// undecided (CGAL's segment–triangle intersection decides).
+template <class FT>
+CornerCut corner_cut(const PointVec<FT, 3>& tri, const Point<FT, 3>& a, const Point<FT, 3>& b) {
+  using P3 = typename KernelOf<FT>::Point_3;
+  const auto cg = [](const Point<FT, 3>& p) { return P3(p[0], p[1], p[2]); };
+  const bool a_corner = std::find(tri.begin(), tri.end(), a) != tri.end();
+  const bool b_corner = std::find(tri.begin(), tri.end(), b) != tri.end();
+  if (a_corner && b_corner) return CornerCut::edge;
+  if ((a_corner || b_corner) &&
+      CGAL::orientation(cg(tri[0]), cg(tri[1]), cg(tri[2]), cg(a_corner ? b : a)) != CGAL::COPLANAR)
+    return CornerCut::corner_only;
+  return CornerCut::undecided;
+}
+
 template <class FT>
 BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3>>& tris,
                                                 const Cuts<FT>& cuts) {
@@ -274,17 +293,9 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
         if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) cdt.insert(proj(p));
       for (const auto& [a, b] : cuts.segments) {
         if (!tb.overlaps(box_of<FT, 3>({a, b}))) continue;
-        // A cut along an edge of the triangle is that edge; one that leaves the triangle's plane
-        // from a vertex meets it only there (already a vertex): predicates, no construction.
-        const bool a_corner = std::find(tri.begin(), tri.end(), a) != tri.end();
-        const bool b_corner = std::find(tri.begin(), tri.end(), b) != tri.end();
-        if (a_corner && b_corner) {
-          cdt.insert_constraint(proj(a), proj(b));
-          continue;
-        }
-        if ((a_corner || b_corner) && CGAL::orientation(cg(tri[0]), cg(tri[1]), cg(tri[2]),
-                                                        cg(a_corner ? b : a)) != CGAL::COPLANAR)
-          continue;
+        const auto corner = corner_cut<FT>(tri, a, b);
+        if (corner == CornerCut::edge) cdt.insert_constraint(proj(a), proj(b));
+        if (corner != CornerCut::undecided) continue; // a corner only: already a vertex
         const auto r = CGAL::intersection(typename K::Segment_3(cg(a), cg(b)), t3);
         if (!r) continue;
         if (const P3* p = boost::get<P3>(&*r))
