@@ -1,9 +1,10 @@
 // Definition 4.7's domains are found from boundary triangles that meet (interf_geo = bnd ∩ bnd,
 // spec/boundary-patches.md#def-4-7). Pairs that share vertices are decided by predicates
-// (shared_edge_meet, same_vertex_set, shared_vertex_meet) before CGAL's triangle intersection,
-// and cuts at a triangle's corners (corner_cut) before CGAL's segment–triangle intersection; here
-// each decision is compared with CGAL's intersection of the same elements, the independent
-// definition, on small integer grids where coplanar and touching pairs are frequent.
+// (shared_corners, then shared_edge_meet, the same triangle, shared_vertex_meet) before CGAL's
+// triangle intersection, and cuts at a triangle's corners (corner_cut) before CGAL's
+// segment–triangle intersection; here each decision is compared with CGAL's intersection of the
+// same elements, the independent definition, on small integer grids where coplanar and touching
+// pairs are frequent.
 #include <gtest/gtest.h>
 
 #include "symmesh/core/kernel.h"
@@ -64,7 +65,7 @@ TEST(InterfacePieces, SharedVertexMeetIsCgalsIntersection) {
     const auto r = CGAL::intersection(triangle(a), triangle(b));
     ASSERT_TRUE(r.has_value()); // they share a vertex
     const auto* point = boost::get<K::Point_3>(&*r);
-    const auto fast = shared_vertex_meet<Exact>(a, b);
+    const auto fast = shared_vertex_meet<Exact>(a, b, shared_corners<Exact>(a, b));
     const bool only_vertex = point != nullptr;
     if (fast) {
       ASSERT_TRUE(only_vertex) << "case " << k << ": the triangles meet in more than a point";
@@ -90,7 +91,7 @@ TEST(InterfacePieces, SameTriangleIsItsIntersection) {
     std::vector<P3> b{a[2], a[0], a[1]};
     if (k % 2) b[std::size_t(k % 3)] = g.in_plane(a);
     if (!affinely_independent<Exact, 3>(b)) continue;
-    const bool fast = same_vertex_set<Exact>(a, b);
+    const bool fast = shared_corners<Exact>(a, b).count == 3;
     const auto r = CGAL::intersection(triangle(a), triangle(b));
     ASSERT_TRUE(r.has_value());
     std::vector<P3> cgal;

@@ -22,6 +22,7 @@
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <map>
 #include <numeric>
@@ -112,22 +113,35 @@ std::vector<PointVec<FT, D>> boundary_facets(const ElementComplex<FT, D>& m) {
   return out;
 }
 
+/// Where each corner of triangle a lies among b's corners (its index there, or −1), by exact
+/// point equality: found once per facet pair for the shortcuts below.
+struct SharedCorners {
+  std::array<int, 3> in_b{-1, -1, -1};
+  int count = 0;
+};
+
+template <class FT>
+SharedCorners shared_corners(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
+  SharedCorners out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3 && out.in_b[std::size_t(i)] < 0; ++j)
+      if (a[std::size_t(i)] == b[std::size_t(j)]) out.in_b[std::size_t(i)] = j, ++out.count;
+  return out;
+}
+
 /// Two triangles that share exactly one edge meet in that edge when they are not coplanar, or
 /// when they are and lie on opposite sides of it: decided by predicates and exact point
 /// equality, without constructions. Neighbouring copies' boundary triangles meet like this
 /// along their interfaces. nullopt when the triangles are otherwise placed (CGAL decides).
 template <class FT>
-std::optional<PointVec<FT, 3>> shared_edge_meet(const PointVec<FT, 3>& a,
-                                                const PointVec<FT, 3>& b) {
+std::optional<PointVec<FT, 3>> shared_edge_meet(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b,
+                                                const SharedCorners& shared) {
   using K = KernelOf<FT>;
   using P = typename K::Point_3;
-  int in_b[3] = {-1, -1, -1}, shared = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3 && in_b[i] < 0; ++j)
-      if (a[std::size_t(i)] == b[std::size_t(j)]) in_b[i] = j, ++shared;
-  if (shared != 2) return std::nullopt;
+  if (shared.count != 2) return std::nullopt;
+  const auto& in_b = shared.in_b;
   const int a_apex = in_b[0] < 0 ? 0 : in_b[1] < 0 ? 1 : 2;
-  const int b_apex = 3 - in_b[(a_apex + 1) % 3] - in_b[(a_apex + 2) % 3];
+  const int b_apex = 3 - in_b[std::size_t((a_apex + 1) % 3)] - in_b[std::size_t((a_apex + 2) % 3)];
   const auto cg = [](const Point<FT, 3>& p) { return P(p[0], p[1], p[2]); };
   const P e0 = cg(a[std::size_t((a_apex + 1) % 3)]), e1 = cg(a[std::size_t((a_apex + 2) % 3)]);
   const P pa = cg(a[std::size_t(a_apex)]), pb = cg(b[std::size_t(b_apex)]);
@@ -146,14 +160,13 @@ std::optional<PointVec<FT, 3>> shared_edge_meet(const PointVec<FT, 3>& a,
 /// neighbouring copies around a shared vertex meet like this. nullopt when not decided (CGAL
 /// decides).
 template <class FT>
-std::optional<Point<FT, 3>> shared_vertex_meet(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
+std::optional<Point<FT, 3>> shared_vertex_meet(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b,
+                                               const SharedCorners& shared) {
   using K = KernelOf<FT>;
   using P = typename K::Point_3;
-  int ia = -1, ib = -1, shared = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (a[std::size_t(i)] == b[std::size_t(j)]) ia = i, ib = j, ++shared;
-  if (shared != 1) return std::nullopt;
+  if (shared.count != 1) return std::nullopt;
+  const int ia = shared.in_b[0] >= 0 ? 0 : shared.in_b[1] >= 0 ? 1 : 2;
+  const int ib = shared.in_b[std::size_t(ia)];
   const auto cg = [](const Point<FT, 3>& p) { return P(p[0], p[1], p[2]); };
   const P v = cg(a[std::size_t(ia)]);
   const P a1 = cg(a[std::size_t((ia + 1) % 3)]), a2 = cg(a[std::size_t((ia + 2) % 3)]);
@@ -181,14 +194,6 @@ std::optional<Point<FT, 3>> shared_vertex_meet(const PointVec<FT, 3>& a, const P
       separates(b2, b1, a1, a2))
     return a[std::size_t(ia)];
   return std::nullopt;
-}
-
-/// a and b are the same triangle (their vertices equal exactly, in any order).
-template <class FT>
-bool same_vertex_set(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
-  for (const auto& p : a)
-    if (std::find(b.begin(), b.end(), p) == b.end()) return false;
-  return true;
 }
 
 template <class FT, int D>
@@ -221,17 +226,18 @@ void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
       q[2] = p.z();
       return q;
     };
-    if (const auto edge = shared_edge_meet<FT>(a, b)) {
+    const auto shared = shared_corners<FT>(a, b);
+    if (const auto edge = shared_edge_meet<FT>(a, b, shared)) {
       out.push_back({*edge});
       return;
     }
     // The same triangle on both sides (neighbouring copies meet like this across their shared
     // faces): it is the intersection, without CGAL's degenerate coplanar case analysis.
-    if (same_vertex_set<FT>(a, b)) {
+    if (shared.count == 3) {
       out.push_back({convex_cyclic_order<FT>(a)});
       return;
     }
-    if (const auto vertex = shared_vertex_meet<FT>(a, b)) {
+    if (const auto vertex = shared_vertex_meet<FT>(a, b, shared)) {
       out.push_back({{*vertex}});
       return;
     }
