@@ -581,15 +581,94 @@ std::vector<std::vector<std::vector<IndexType>>> boundary_facets_by_vertex(const
   return out;
 }
 
+/// Within how much of L (the farthest link vertex from v) rounded points count as lying in one
+/// plane or on one line, and unit normals as equal (1 - dot). A generated patch on a slanted plane
+/// (an n-gon slice's sides and cut planes) holds no exactly coplanar doubles, but its points are
+/// off the plane by rounding, about 1e-15 L; a real crease of angle θ puts its link θ L off it.
+/// The same margin as the flat patches of Technique 5.8's boundary flips.
+constexpr double kFlatToRounding = 1e-9;
+
+/// Where v may slide: its link (sorted), and whether deciding it needed kFlatToRounding (the
+/// exact predicates found the points not exactly in one plane / on one line).
+struct SlidingLink {
+  std::vector<IndexType> link;
+  bool rounded = false;
+};
+
+/// Unit outward normal of a 3D template-boundary facet: its cell's fourth vertex lies behind it.
+std::array<double, 3> outward_normal(const Work& w, const std::vector<IndexType>& f) {
+  auto n = cross3(sub3(w.p(f[1]), w.p(f[0])), sub3(w.p(f[2]), w.p(f[0])));
+  const auto cells = w.cells_with({f[0], f[1], f[2]});
+  const IndexType q = apex(w.cells[std::size_t(cells.front())], {f[0], f[1], f[2]});
+  const double s = dot3(n, sub3(w.p(q), w.p(f[0]))) > 0 ? -1 : 1;
+  const double len = std::sqrt(dot3(n, n));
+  for (auto& x : n) x *= s / len;
+  return n;
+}
+
+/// The farthest of the points from o.
+double reach(const Work& w, IndexType o, const std::vector<IndexType>& points) {
+  double r = 0;
+  for (IndexType u : points) {
+    double l = 0;
+    for (int i = 0; i < w.d; ++i) l += (w.p(u)[i] - w.p(o)[i]) * (w.p(u)[i] - w.p(o)[i]);
+    r = std::max(r, l);
+  }
+  return std::sqrt(r);
+}
+
+/// o strictly between a and b on their line, up to `tol` times |ab| off it (tol = 0: exactly, by
+/// exact predicates).
+bool strictly_between(const Work& w, IndexType a, IndexType o, IndexType b, double tol) {
+  if (tol == 0) {
+    if (w.d == 2) {
+      const P2 pa = p2(w.p(a)), po = p2(w.p(o)), pb = p2(w.p(b));
+      return CGAL::collinear(pa, po, pb) &&
+             CGAL::collinear_are_strictly_ordered_along_line(pa, po, pb);
+    }
+    const P3 pa = p3(w.p(a)), po = p3(w.p(o)), pb = p3(w.p(b));
+    // (CGAL's ordering test presupposes collinearity.)
+    return CGAL::collinear(pa, po, pb) &&
+           CGAL::collinear_are_strictly_ordered_along_line(pa, po, pb);
+  }
+  double ab[3] = {0, 0, 0}, ao[3] = {0, 0, 0}, ll = 0, t = 0;
+  for (int i = 0; i < w.d; ++i) {
+    ab[i] = w.p(b)[i] - w.p(a)[i];
+    ao[i] = w.p(o)[i] - w.p(a)[i];
+    ll += ab[i] * ab[i];
+    t += ab[i] * ao[i];
+  }
+  if (!(ll > 0)) return false;
+  t /= ll;
+  double off = 0;
+  for (int i = 0; i < w.d; ++i) off += (ao[i] - t * ab[i]) * (ao[i] - t * ab[i]);
+  return t > 0 && t < 1 && std::sqrt(off) <= tol * std::sqrt(ll);
+}
+
+/// The facets through v that lie in the plane through v with unit normal n, up to `tol` L, with
+/// their outward normals within `tol` of n (a fold is not flat).
+bool in_plane_to_rounding(const Work& w, const std::vector<IndexType>& f, IndexType v,
+                          const std::array<double, 3>& n, double tol, double l) {
+  if (1 - dot3(outward_normal(w, f), n) > tol) return false;
+  for (IndexType u : f)
+    if (std::abs(dot3(sub3(w.p(u), w.p(v)), n)) > tol * l) return false;
+  return true;
+}
+
 /// The two ends of a straight crease through 3D boundary vertex v, sorted: its boundary facets
 /// (a closed fan) lie in two planes that meet in a line through v, and exactly two link vertices
 /// lie in both, on that line on either side of v. Then v lies inside one edge of its template's
 /// boundary subdivision and may slide along it (Section 5.2.2: within its patch, here a patch
-/// edge). Otherwise empty. Exact predicates decide.
+/// edge). Otherwise empty. tol = 0: exact predicates decide; else the planes and the line hold
+/// the points up to tol L (kFlatToRounding: a slanted crease of a generated mesh).
 std::vector<IndexType> crease_ends(const Work& w, const std::vector<std::vector<IndexType>>& facets,
-                                   IndexType v) {
+                                   IndexType v, double tol) {
   const P3 o = p3(w.p(v));
-  // The plane of a facet through v, as its two other vertices.
+  std::set<IndexType> around;
+  for (const auto& f : facets) around.insert(f.begin(), f.end());
+  around.erase(v);
+  const double l = reach(w, v, {around.begin(), around.end()});
+  // The plane of a facet through v, as its two other vertices (exact) or its normal (rounded).
   const auto other = [&](const std::vector<IndexType>& f) {
     std::array<P3, 2> q;
     std::size_t n = 0;
@@ -597,20 +676,32 @@ std::vector<IndexType> crease_ends(const Work& w, const std::vector<std::vector<
       if (u != v && n < 2) q[n++] = p3(w.p(u));
     return q;
   };
-  const auto in_plane = [&](const std::array<P3, 2>& plane, const std::vector<IndexType>& f) {
+  struct Plane {
+    std::array<P3, 2> points;
+    std::array<double, 3> normal;
+  };
+  const auto plane_of = [&](const std::vector<IndexType>& f) {
+    return Plane{other(f), tol == 0 ? std::array<double, 3>{} : outward_normal(w, f)};
+  };
+  const auto in_plane = [&](const Plane& plane, const std::vector<IndexType>& f) {
+    if (tol != 0) return in_plane_to_rounding(w, f, v, plane.normal, tol, l);
     for (IndexType u : f)
-      if (CGAL::orientation(o, plane[0], plane[1], p3(w.p(u))) != CGAL::COPLANAR) return false;
+      if (CGAL::orientation(o, plane.points[0], plane.points[1], p3(w.p(u))) != CGAL::COPLANAR)
+        return false;
     return true;
   };
-  const auto first = other(facets[0]);
-  if (CGAL::collinear(o, first[0], first[1])) return {};
-  std::optional<std::array<P3, 2>> second;
+  const auto degenerate = [&](const Plane& plane) {
+    return tol == 0 && CGAL::collinear(o, plane.points[0], plane.points[1]);
+  };
+  const auto first = plane_of(facets[0]);
+  if (degenerate(first)) return {};
+  std::optional<Plane> second;
   std::set<IndexType> on_first, on_second;
   for (const auto& f : facets) {
     auto& side = in_plane(first, f) ? on_first : on_second;
     if (&side == &on_second) {
-      if (!second) second = other(f);
-      if (CGAL::collinear(o, (*second)[0], (*second)[1]) || !in_plane(*second, f)) return {};
+      if (!second) second = plane_of(f);
+      if (degenerate(*second) || !in_plane(*second, f)) return {};
     }
     for (IndexType u : f)
       if (u != v) side.insert(u);
@@ -620,20 +711,38 @@ std::vector<IndexType> crease_ends(const Work& w, const std::vector<std::vector<
   std::set_intersection(on_first.begin(), on_first.end(), on_second.begin(), on_second.end(),
                         std::back_inserter(ends));
   if (ends.size() != 2) return {};
-  const P3 a = p3(w.p(ends[0])), b = p3(w.p(ends[1]));
-  return CGAL::collinear(a, o, b) && CGAL::collinear_are_strictly_ordered_along_line(a, o, b)
-             ? ends
-             : std::vector<IndexType>{};
+  return strictly_between(w, ends[0], v, ends[1], tol) ? ends : std::vector<IndexType>{};
 }
 
-/// The link of boundary vertex v in the template boundary when v may slide in its boundary patch
-/// (Section 5.2.2): its boundary facets form one flat disk — two collinear edges with v strictly
-/// between them (2D), or as many coplanar triangles as link vertices, each link vertex on two of
-/// them (3D) — or, in 3D, two flat half-disks meeting in a straight crease through v, whose two
-/// ends on the crease are then the link (crease_ends). A vertex where the boundary bends
-/// otherwise lies in more than one patch and may not move: empty. Exact predicates decide.
-std::vector<IndexType>
-sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets, IndexType v) {
+/// Whether the closed fan of 3D boundary facets through v is one flat disk up to tol L: every
+/// link vertex within tol L of the plane through v with the outward normal of its largest facet,
+/// and every outward normal within tol of that one.
+bool flat_disk_to_rounding(const Work& w, const std::vector<std::vector<IndexType>>& facets,
+                           IndexType v, const std::vector<IndexType>& link, double tol) {
+  std::size_t largest = 0;
+  double area = -1;
+  for (std::size_t k = 0; k < facets.size(); ++k) {
+    const auto& f = facets[k];
+    const auto n = cross3(sub3(w.p(f[1]), w.p(f[0])), sub3(w.p(f[2]), w.p(f[0])));
+    if (dot3(n, n) > area) area = dot3(n, n), largest = k;
+  }
+  if (!(area > 0)) return false;
+  const auto n = outward_normal(w, facets[largest]);
+  const double l = reach(w, v, link);
+  for (const auto& f : facets)
+    if (!in_plane_to_rounding(w, f, v, n, tol, l)) return false;
+  return true;
+}
+
+/// Where boundary vertex v may slide (Section 5.2.2): its boundary facets form one flat disk —
+/// two collinear edges with v strictly between them (2D), or as many coplanar triangles as link
+/// vertices, each link vertex on two of them (3D) — then its link; or, in 3D, two flat
+/// half-disks meeting in a straight crease through v — then the crease's two ends
+/// (crease_ends). A vertex where the boundary bends otherwise lies in more than one patch and
+/// may not move: empty. Exact predicates decide first; what they find not exactly flat or
+/// straight is decided again up to `tol` (kFlatToRounding), and marked `rounded`.
+SlidingLink sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets,
+                         IndexType v, double tol) {
   std::map<IndexType, int> degree;
   for (const auto& f : facets)
     for (IndexType u : f)
@@ -645,11 +754,9 @@ sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets, I
   }
   if (w.d == 2) {
     if (facets.size() != 2 || link.size() != 2) return {};
-    const P2 a = p2(w.p(link[0])), o = p2(w.p(v)), b = p2(w.p(link[1]));
-    // (CGAL's ordering test presupposes collinearity.)
-    return CGAL::collinear(a, o, b) && CGAL::collinear_are_strictly_ordered_along_line(a, o, b)
-               ? link
-               : std::vector<IndexType>{};
+    if (strictly_between(w, link[0], v, link[1], 0)) return {link, false};
+    if (tol != 0 && strictly_between(w, link[0], v, link[1], tol)) return {link, true};
+    return {};
   }
   if (facets.size() < 3 || link.size() != facets.size()) return {};
   const P3 o = p3(w.p(v)), a = p3(w.p(link[0]));
@@ -657,9 +764,14 @@ sliding_link(const Work& w, const std::vector<std::vector<IndexType>>& facets, I
   while (k < link.size() && CGAL::collinear(o, a, p3(w.p(link[k])))) ++k;
   if (k == link.size()) return {};
   const P3 b = p3(w.p(link[k]));
-  for (IndexType u : link)
-    if (CGAL::orientation(o, a, b, p3(w.p(u))) != CGAL::COPLANAR) return crease_ends(w, facets, v);
-  return link;
+  bool flat = true;
+  for (IndexType u : link) flat = flat && CGAL::orientation(o, a, b, p3(w.p(u))) == CGAL::COPLANAR;
+  if (flat) return {link, false};
+  if (auto ends = crease_ends(w, facets, v, 0); !ends.empty()) return {ends, false};
+  if (tol == 0) return {};
+  if (flat_disk_to_rounding(w, facets, v, link, tol)) return {link, true};
+  if (auto ends = crease_ends(w, facets, v, tol); !ends.empty()) return {ends, true};
+  return {};
 }
 
 /// A vertex of one template moved to the centroid of its boundary link.
@@ -667,6 +779,7 @@ struct SlidingMove {
   std::size_t t = 0;
   IndexType v = 0;
   std::vector<IndexType> link; ///< sorted
+  bool rounded = false;        ///< flat / straight only up to kFlatToRounding
 };
 
 /// Equation 5.1: the moves of boundary vertex v of template t and of every vertex related to it
@@ -677,13 +790,13 @@ struct SlidingMove {
 /// `link_copies` (the dropped hypothesis of Equation 5.1) v's move alone.
 bool plan_sliding_move(const Session& s, const std::vector<TableIndex>& index,
                        const std::vector<std::vector<std::vector<std::vector<IndexType>>>>& bfacets,
-                       std::size_t t, IndexType v, std::vector<SlidingMove>& out,
+                       std::size_t t, IndexType v, std::vector<SlidingMove>& out, double tol,
                        bool link_copies = true) {
   out.clear();
-  auto link = sliding_link(s.w[t], bfacets[t][std::size_t(v)], v);
-  if (link.empty()) return false;
+  const auto link = sliding_link(s.w[t], bfacets[t][std::size_t(v)], v, tol);
+  if (link.link.empty()) return false;
   std::map<std::pair<std::size_t, IndexType>, std::size_t> seen;
-  out.push_back({t, v, link});
+  out.push_back({t, v, link.link, link.rounded});
   if (!link_copies) return true;
   seen[{t, v}] = 0;
   for (std::size_t next = 0; next < out.size(); ++next) {
@@ -708,10 +821,11 @@ bool plan_sliding_move(const Session& s, const std::vector<TableIndex>& index,
           if (out[found->second].link != mapped) return false;
           continue;
         }
-        if (sliding_link(s.w[other], bfacets[other][std::size_t(iv->second)], iv->second) != mapped)
-          return false;
+        const auto there =
+            sliding_link(s.w[other], bfacets[other][std::size_t(iv->second)], iv->second, tol);
+        if (there.link != mapped) return false;
         seen[{other, iv->second}] = out.size();
-        out.push_back({other, iv->second, mapped});
+        out.push_back({other, iv->second, mapped, there.rounded});
       }
   }
   return true;
@@ -724,19 +838,27 @@ bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve
   bool changed = false;
   for (std::size_t m = 0; m < moves.size(); ++m) {
     const auto& w = s.w[moves[m].t];
-    // The sum, then one division: a coordinate that every link vertex shares (the plane of a
-    // flat patch parallel to an axis) is then kept exactly, so the vertex stays on its face.
+    // The sum, then one division; a coordinate that every link vertex shares (the plane of a
+    // flat patch parallel to an axis) is copied, not recomputed: a mean of equal doubles that
+    // are not dyadic (0.1 + 0.1 + 0.1 = 0.30000000000000004) may round off them, and the vertex
+    // would leave its face.
     at[m] = {0, 0, 0};
     for (IndexType u : moves[m].link)
       for (int i = 0; i < w.d; ++i) at[m][std::size_t(i)] += w.p(u)[i];
-    for (int i = 0; i < w.d; ++i) at[m][std::size_t(i)] /= double(moves[m].link.size());
+    for (int i = 0; i < w.d; ++i) {
+      const double shared = w.p(moves[m].link.front())[i];
+      bool all = true;
+      for (IndexType u : moves[m].link) all = all && w.p(u)[i] == shared;
+      at[m][std::size_t(i)] = all ? shared : at[m][std::size_t(i)] / double(moves[m].link.size());
+    }
     for (int i = 0; i < w.d; ++i) {
       old[m][std::size_t(i)] = w.p(moves[m].v)[i];
       changed = changed || at[m][std::size_t(i)] != old[m][std::size_t(i)];
     }
-    // A crease vertex (two link vertices in 3D) must land on its crease exactly: the midpoint
-    // of a slanted crease's ends may round off it, and the boundary would change.
-    if (w.d == 3 && moves[m].link.size() == 2) {
+    // A crease vertex (two link vertices in 3D) on an exact crease must land on it exactly: the
+    // midpoint of a slanted crease's ends may round off it, and the boundary would change. On a
+    // crease straight only to rounding the midpoint is as far off as the crease's own points.
+    if (w.d == 3 && moves[m].link.size() == 2 && !moves[m].rounded) {
       const P3 a = p3(w.p(moves[m].link[0])), b = p3(w.p(moves[m].link[1]));
       const P3 q = p3(at[m].data());
       if (!CGAL::collinear(a, q, b) || !CGAL::collinear_are_strictly_ordered_along_line(a, q, b))
@@ -769,8 +891,8 @@ bool apply_moves(Session& s, const std::vector<SlidingMove>& moves, bool improve
   return valid;
 }
 
-SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only,
-                    bool link_copies = true) {
+SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only, bool link_copies = true,
+                    double tol = kFlatToRounding) {
   SmoothReport r;
   const auto index = index_tables(s.t);
   std::vector<std::vector<std::vector<std::vector<IndexType>>>> bfacets;
@@ -782,7 +904,7 @@ SmoothReport smooth(Session& s, std::size_t iterations, bool improve_only,
       for (IndexType v = 0; v < IndexType(w.vertex_count()); ++v) {
         if (w.inc[std::size_t(v)].empty()) continue;
         if (!bfacets[t][std::size_t(v)].empty()) {
-          if (plan_sliding_move(s, index, bfacets, t, v, moves, link_copies) &&
+          if (plan_sliding_move(s, index, bfacets, t, v, moves, tol, link_copies) &&
               apply_moves(s, moves, improve_only))
             r.boundary_moves += moves.size();
           continue;
@@ -1072,6 +1194,14 @@ namespace detail {
 SmoothReport smooth_vertices_unlinked(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations) {
   Session s(t);
   const auto r = smooth(s, iterations, false, false);
+  s.store();
+  return r;
+}
+
+SmoothReport smooth_vertices_with_flatness(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
+                                           double tolerance) {
+  Session s(t);
+  const auto r = smooth(s, iterations, false, true, tolerance);
   s.store();
   return r;
 }

@@ -87,10 +87,13 @@ struct SmoothReport {
 
 /// Section 5.2.2, Laplacian smoothing over `iterations` Gauss–Seidel sweeps. A template-interior
 /// vertex moves to the mean of its neighbours. A template-boundary vertex moves only inside its
-/// boundary patch: where its boundary facets form one flat disk (exact predicates), it moves to
-/// the mean of its boundary neighbours; in 3D, where they form two flat half-disks meeting in a
-/// straight crease through it, it moves along the crease to the midpoint of the crease's two
-/// ends, when that rounded point lies exactly on the crease. Every vertex related to it through
+/// boundary patch: where its boundary facets form one flat disk, it moves to the mean of its
+/// boundary neighbours; in 3D, where they form two flat half-disks meeting in a straight crease
+/// through it, it moves along the crease to the midpoint of the crease's two ends (on an exact
+/// crease only when that rounded point lies exactly on it). Flat and straight are decided by
+/// exact predicates, then, for what they find bent, up to the rounding of the coordinates (within
+/// 1e-9 of the farthest link vertex: the slanted planes of the n-gon slices), a coordinate that
+/// the whole link shares is kept exactly. Every vertex related to it through
 /// the identification tables moves with it to the image of that place (Equation 5.1); a vertex
 /// where the boundary bends otherwise, or one that the tables relate inconsistently (an irregular
 /// instance graph, Figure 4.11), stays. A move is made when every cell around every moved vertex
@@ -104,6 +107,13 @@ namespace detail {
 /// vertex whose link is not the image of v's, e.g. on the other side of a T-junction, moves
 /// elsewhere or not at all, and the interface opens).
 SmoothReport smooth_vertices_unlinked(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations);
+/// smooth_vertices (not improve-only) with `tolerance` in place of the 1e-9 within which rounded
+/// boundary points count as one plane or one line: 0 is exact predicates only (a slanted patch's
+/// vertices stay), and a tolerance of 2 or more takes every closed fan for a flat disk — the
+/// dropped hypothesis (a vertex moves only within its patch): corner and crease vertices move off
+/// the boundary.
+SmoothReport smooth_vertices_with_flatness(mesh::TemplatedMeshCompactSvb& t, std::size_t iterations,
+                                           double tolerance);
 } // namespace detail
 
 /// One instance image of a template cell, as --refine-where sees it.
