@@ -20,6 +20,14 @@
 // unchanged, cell for cell; a moved clone whose interior was also changed is refused. Dropped
 // hypothesis (the motion): merging the moved clone as if it were identical (its instance keeps
 // the transformation made for the moved coordinates) changes AT.
+// Claim (congruent up to rounding): when the clone is turned by a rotation R that is no signed
+// permutation (1°–89°, in 3D about (1, 2, 3); its coordinates replaced by their rounded images,
+// its instance's transformation by T R^T rounded: AT is unchanged up to rounding), the exact
+// search refuses it, template_congruence(t, i, j, 1e-9) finds R, and
+// merge_congruent_templates(t, 1e-9) merges it back: valid, certified with the same boundary
+// measure, AT's vertex count and its cells (as point sets, to 1e-9) unchanged. Dropped hypothesis
+// (the templates differ by rounding and no more): a turned clone with one vertex also moved by
+// 1e-6 of the diameter, merged with a tolerance of 1e-4, is merged too, and AT's cells change.
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/registry.h"
 #include "symmesh/adapt/tmesh_template_cloning.h"
@@ -27,6 +35,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -259,6 +268,82 @@ void merge_moved_clone(const boxes::BoxInput& g, bool change_clone, bool by_cong
   SYMMESH_PROOF_ASSERT(keeps_structure_instance(t, before), failure, no_picture);
 }
 
+/// AT's cells as point sets with coordinates rounded to 1e-9: equal for meshes that differ by
+/// the rounding of their coordinates.
+Cells structure_instance_cells_to_1e9(const mesh::TemplatedMeshCompactSvb& t) {
+  Cells out;
+  for (auto cell : structure_instance_cells(t)) {
+    for (auto& p : cell)
+      for (auto& x : p) x = std::round(x * 1e9) / 1e9;
+    std::sort(cell.begin(), cell.end());
+    out.insert(std::move(cell));
+  }
+  return out;
+}
+
+/// Turns template `ti` (instanced once) by a rotation R by `degrees` (in 3D about (1, 2, 3)):
+/// coordinates R x rounded, the instance's transformation T R^T rounded; with `nudge`, one vertex
+/// moved by 1e-6 of the template's extent along x too.
+void turn_template(mesh::TemplatedMeshCompactSvb& t, std::size_t ti, int degrees, bool nudge) {
+  const int d = t.templated.point_dimension;
+  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a), k = 1 - c;
+  const double x = 1 / std::sqrt(14.0), y = 2 * x, z = 3 * x;
+  const std::vector<double> r =
+      d == 2 ? std::vector<double>{c, -s, s, c}
+             : std::vector<double>{c + x * x * k,     x * y * k - z * s, x * z * k + y * s,
+                                   y * x * k + z * s, c + y * y * k,     y * z * k - x * s,
+                                   z * x * k - y * s, z * y * k + x * s, c + z * z * k};
+  auto& mt = t.templated.templates[ti];
+  auto& m = mt.mesh;
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t v = 0; v < m.vertex_count(); ++v) {
+    double* p = &m.vertex_coords[v * std::size_t(d)];
+    lo = std::min(lo, p[0]), hi = std::max(hi, p[0]);
+    double q[3] = {0, 0, 0};
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j < d; ++j) q[i] += r[std::size_t(i * d + j)] * p[j];
+    std::copy(q, q + d, p);
+  }
+  if (nudge) m.vertex_coords[0] += 1e-6 * (hi - lo);
+  const auto& old = t.templated.transformations[std::size_t(mt.transformation_indices[0])];
+  mesh::Transformation composed = old;
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) {
+      double e = 0; // (T R^T)_ij = sum_l T_il R_jl
+      for (int l = 0; l < d; ++l)
+        e += old.matrix[std::size_t(i * d + l)] * r[std::size_t(j * d + l)];
+      composed.matrix[std::size_t(i * d + j)] = e;
+    }
+  mt.transformation_indices[0] = mesh::IndexType(t.templated.transformations.size());
+  t.templated.transformations.push_back(composed);
+}
+
+void merge_turned_clone(const boxes::BoxInput& g, int degrees, bool nudge, double tolerance) {
+  const std::string text = g.description() + "\n(clone turned by " + std::to_string(degrees) +
+                           " degrees" + (nudge ? ", one vertex nudged" : "") + ", tolerance " +
+                           std::to_string(tolerance) + ")";
+  const auto failure = [&] { return text; };
+  const auto no_picture = [] { return std::string(); };
+  auto t = g.generate();
+  const auto templates = t.templated.templates.size();
+  const auto [original, clone] = clone_random_instance(t);
+  turn_template(t, clone.template_index, degrees, nudge);
+  const double boundary = adapt::certify_conformity(t).boundary_measure;
+  const auto cells = structure_instance_cells_to_1e9(t);
+  const auto vertices = mesh::StructureInstance(t).vertex_count();
+  SYMMESH_PROOF_ASSERT(!adapt::template_congruence(t, original, clone.template_index), failure,
+                       no_picture);
+  SYMMESH_PROOF_ASSERT(
+      adapt::template_congruence(t, original, clone.template_index, tolerance).has_value(), failure,
+      no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::merge_congruent_templates(t, tolerance) == 1, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(t.templated.templates.size() == templates, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(mesh::StructureInstance(t).vertex_count() == vertices, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(structure_instance_cells_to_1e9(t) == cells, failure, no_picture);
+}
+
 /// Splits a random template of g's mesh along a random non-empty proper subset of its cells;
 /// without `identify_cut`, the two parts of each instance are not identified along the cut.
 void split_random_part(const boxes::BoxInput& g, bool identify_cut) {
@@ -344,6 +429,25 @@ void register_section_5_2_1_tmesh(std::vector<Property>& p) {
                "inverse) is found congruent exactly and merged back with AT unchanged, cell for "
                "cell, certified; a moved clone changed inside is refused",
                merge_moved_clone, false);
+  for (int d : {2, 3})
+    p.push_back({kClaim,
+                 "tmesh_merge_congruent_to_rounding_keeps_the_structure_instance_" +
+                     std::to_string(d) + "d",
+                 d, Kind::holds,
+                 "Section 5.2.1 on generated box grids: a clone turned by a rotation that is no "
+                 "signed permutation (coordinates and transformation rounded) is refused by the "
+                 "exact search, found congruent up to 1e-9 of its diameter and merged back with AT "
+                 "unchanged to rounding, certified",
+                 [d] {
+                   return rc::detail::toProperty([d] {
+                     merge_turned_clone(*boxes::box_grid(d), *rc::gen::inRange(1, 90), false, 1e-9);
+                   });
+                 },
+                 [d] {
+                   return rc::detail::toProperty([d] {
+                     merge_turned_clone(*boxes::box_grid(d), *rc::gen::inRange(1, 90), true, 1e-4);
+                   });
+                 }});
   for (int d : {2, 3})
     p.push_back(
         {kClaim, "tmesh_split_keeps_the_structure_instance_" + std::to_string(d) + "d", d,

@@ -287,6 +287,62 @@ PYEOF
       || fail "$name: no progress line for --merge-congruent"
   else fail "$name: --merge-congruent: $(cat "$TMP/stderr")"; fi
 done
+# --merge-congruent --congruence-tolerance (spec/adaptation.md#tmesh-cloning): the clone of the
+# block above written in AT's coordinates (its vertices moved by its instance's rotation by
+# 3 * 45 degrees and rounded, the instance's transformation the identity: AT unchanged up to
+# rounding) is congruent to its template only up to rounding. --merge-congruent alone (exact)
+# leaves it; with --congruence-tolerance 1e-9 it is merged back and AT keeps its cells (by
+# coordinates to 1e-9). A negative tolerance, or one without --merge-congruent, is bad input.
+for name in n8 tsv8; do
+  $PY - "$TMP/$name.c.tmesh" "$TMP/$name.t.tmesh" <<'PYEOF'
+import json, sys
+t = json.load(open(sys.argv[1]))
+d = t["dimension"]
+tp = t["templates"][-1]
+(inst,) = tp["instances"]
+f = t["transformations"][inst["transformation"]]
+m, b = f["matrix"], f["translation"]
+tp["vertices"] = [[sum(m[r * d + c] * x[c] for c in range(d)) + b[r] for r in range(d)]
+                  for x in tp["vertices"]]
+t["transformations"].append({"matrix": [1.0 if r == c else 0.0 for r in range(d) for c in range(d)],
+                             "translation": [0.0] * d})
+inst["transformation"] = len(t["transformations"]) - 1
+json.dump(t, open(sys.argv[2], "w"))
+PYEOF
+  if "$BIN" adapt "$TMP/$name.t.tmesh" --merge-congruent -o "$TMP/$name.te.tmesh" \
+      --report "$TMP/$name.te.json" --quiet \
+    && "$BIN" adapt "$TMP/$name.t.tmesh" --merge-congruent --congruence-tolerance 1e-9 \
+      -o "$TMP/$name.tm.tmesh" --vtu "$TMP/$name.tm.vtu" --report "$TMP/$name.tm.json" \
+      2> "$TMP/stderr" \
+    && $PY - "$TMP/$name" <<'PYEOF'
+import json, sys
+import meshio
+import numpy as np
+base = sys.argv[1]
+te, tm = (json.load(open(f"{base}.{k}.json")) for k in ("te", "tm"))
+nt = len(json.load(open(f"{base}.0.tmesh"))["templates"])
+assert te["steps"][0]["merge_congruent"] == 0, te["steps"]
+assert tm["steps"][0] == {"merge_congruent": 1, "templates": nt}, tm["steps"]
+def cells(k):
+    m = meshio.read(f"{base}.{k}.vtu")
+    return sorted(tuple(sorted(tuple(np.round(m.points[v], 9)) for v in c)) for c in m.cells[0].data)
+assert cells("tm") == cells("0"), "merging up to rounding changed AT"
+PYEOF
+  then
+    grep -q "merge-congruent: 1 templates merged" "$TMP/stderr" \
+      && pass "$name: a clone rotated and rounded is merged back only with --congruence-tolerance, AT unchanged" \
+      || fail "$name: no progress line for --merge-congruent --congruence-tolerance"
+  else fail "$name: --congruence-tolerance: $(cat "$TMP/stderr")"; fi
+done
+for bad in "--merge-congruent --congruence-tolerance -1" "--merge-congruent --congruence-tolerance nan" \
+           "--congruence-tolerance 1e-9 --smooth 1"; do
+  rm -f "$TMP/bad.tmesh"
+  "$BIN" adapt "$TMP/n8.t.tmesh" $bad -o "$TMP/bad.tmesh" 2> "$TMP/stderr"
+  rc=$?
+  [ $rc = 2 ] && [ ! -e "$TMP/bad.tmesh" ] && [ "$(wc -l < "$TMP/stderr")" = 1 ] \
+    && pass "adapt $bad: exit 2, one line, no file ($(cut -c1-80 "$TMP/stderr"))" \
+    || fail "adapt $bad: exit $rc, $(cat "$TMP/stderr")"
+done
 # --split-where (spec/adaptation.md#tmesh-cloning): every template with cells on both sides of
 # a plane through the middle of its x range splits in two, the new template instanced like the
 # old one; AT keeps its cells and vertices and conforms. Refining the split-off part alone then

@@ -57,9 +57,15 @@ struct TemplateCongruence {
   bool identity = false;
 };
 /// nullopt when no such R exists (also for non-simplicial templates or repeated vertices).
-/// \pre i, j < t.templated.templates.size()
+/// With `tolerance` > 0, a pair the exact search refuses is searched again up to rounding: R
+/// from a cell pair as above, nearly orthogonal (1e-6), made orthonormal (Gram–Schmidt, the
+/// translation fitted to the cell), sending every vertex of j within `tolerance` times i's
+/// diameter of a distinct vertex of i and every cell of j onto a cell of i — a rotation by
+/// 2π/n whose images were rounded (1e-9 is ample: rounding is ~1e-16 of the coordinates).
+/// \pre i, j < t.templated.templates.size(), tolerance >= 0
 std::optional<TemplateCongruence> template_congruence(const mesh::TemplatedMeshCompactSvb& t,
-                                                      std::size_t i, std::size_t j);
+                                                      std::size_t i, std::size_t j,
+                                                      double tolerance = 0);
 /// Section 5.2.1, merging congruent templates: template j's instances join template i with the
 /// transformations T_{j,g} ∘ R^{-1} (composed over the rationals, each entry rounded once; a
 /// signed permutation with representable translations composes exactly), its identification
@@ -68,11 +74,14 @@ std::optional<TemplateCongruence> template_congruence(const mesh::TemplatedMeshC
 /// transformations.
 /// \pre t.is_valid(), i != j, both in range, template_congruence(t, i, j); else
 /// std::invalid_argument naming the templates
-void merge_congruent_templates(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j);
+/// With `tolerance` > 0 also templates congruent up to it (template_congruence); AT's points of
+/// j's instances then move by up to that fraction of the diameter (rounding, for 1e-9).
+void merge_congruent_templates(mesh::TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j,
+                               double tolerance = 0);
 /// Merges every template into the first template congruent to it by an exact motion (identical
-/// ones included). Returns the number of templates merged away.
+/// ones included), or with `tolerance` > 0 up to it. Returns the number of templates merged away.
 /// \pre t.is_valid(), else std::invalid_argument
-std::size_t merge_congruent_templates(mesh::TemplatedMeshCompactSvb& t);
+std::size_t merge_congruent_templates(mesh::TemplatedMeshCompactSvb& t, double tolerance = 0);
 /// Merges every template into the first template identical to it. Returns the number of
 /// templates merged away.
 /// \pre t.is_valid()

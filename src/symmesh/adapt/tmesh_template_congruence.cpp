@@ -6,7 +6,9 @@
 // orthogonal and send every vertex of j exactly onto a vertex of i, and cells onto cells. Motions
 // whose images of doubles are doubles (translations by representable amounts, mirrors, signed
 // permutations, Pythagorean rotations on suitable points) are found; a rotation by 2π/n with
-// rounded images is not, and is refused like any non-congruent pair.
+// rounded images is not, and is refused like any non-congruent pair — unless a tolerance is
+// given: then a pair the exact search refuses is searched again up to that fraction of i's
+// diameter (find_congruence_to_rounding), the motion made orthonormal before it is composed.
 #include "symmesh/adapt/tmesh_template_cloning.h"
 
 #include <gmpxx.h>
@@ -141,9 +143,9 @@ std::vector<double> edge_lengths(const mesh::Mesh& m, std::size_t c, int d) {
   return out;
 }
 
-bool similar(const std::vector<double>& x, const std::vector<double>& y) {
+bool similar(const std::vector<double>& x, const std::vector<double>& y, double relative) {
   for (std::size_t k = 0; k < x.size(); ++k)
-    if (std::abs(x[k] - y[k]) > 1e-9 * std::max(x[k], y[k])) return false;
+    if (std::abs(x[k] - y[k]) > relative * std::max(x[k], y[k])) return false;
   return true;
 }
 
@@ -195,8 +197,166 @@ struct Found {
   std::vector<IndexType> vertex;
 };
 
-std::optional<Found> find_congruence(const TemplatedMeshCompactSvb& t, std::size_t i,
-                                     std::size_t j) {
+/// A grid of i's vertices with cells of 4·eps, so that the vertices within eps of a point lie in
+/// the 3^d cells around it; the nearest one within eps, if any.
+struct RoundedLookup {
+  const mesh::Mesh& onto;
+  double eps, cell;
+  std::map<std::array<std::int64_t, 3>, std::vector<IndexType>> grid;
+
+  RoundedLookup(const mesh::Mesh& m, double eps_) : onto(m), eps(eps_), cell(4 * eps_) {
+    for (std::size_t v = 0; v < m.vertex_count(); ++v)
+      grid[key(m.vertex(v))].push_back(IndexType(v));
+  }
+  std::array<std::int64_t, 3> key(const double* x) const {
+    std::array<std::int64_t, 3> k{0, 0, 0};
+    for (int c = 0; c < onto.point_dimension; ++c)
+      k[std::size_t(c)] = std::int64_t(std::floor(x[c] / cell));
+    return k;
+  }
+  std::optional<IndexType> near(const double* x) const {
+    const int d = onto.point_dimension;
+    const auto k0 = key(x);
+    std::optional<IndexType> best;
+    double best2 = eps * eps;
+    for (int n = 0; n < (d == 2 ? 9 : 27); ++n) {
+      auto k = k0;
+      for (int c = 0, m = n; c < d; ++c, m /= 3) k[std::size_t(c)] += m % 3 - 1;
+      const auto it = grid.find(k);
+      if (it == grid.end()) continue;
+      for (IndexType v : it->second) {
+        double l2 = 0;
+        for (int c = 0; c < d; ++c)
+          l2 += (onto.vertex(std::size_t(v))[c] - x[c]) * (onto.vertex(std::size_t(v))[c] - x[c]);
+        if (l2 <= best2) best2 = l2, best = v;
+      }
+    }
+    return best;
+  }
+};
+
+/// The rational affine map as doubles, its columns made orthonormal by Gram–Schmidt (the
+/// orientation kept) and b fitted to the corners' centroids: R up to rounding, rigid.
+ExactAffine orthonormal(const ExactAffine& f, const std::vector<const double*>& p,
+                        const std::vector<const double*>& q) {
+  const int d = f.d;
+  std::vector<std::array<double, 3>> col(static_cast<std::size_t>(d));
+  for (int c = 0; c < d; ++c)
+    for (int r = 0; r < d; ++r) col[std::size_t(c)][std::size_t(r)] = f.at(r, c).get_d();
+  for (int c = 0; c < d; ++c) {
+    auto& u = col[std::size_t(c)];
+    for (int k = 0; k < c; ++k) {
+      double dot = 0;
+      for (int r = 0; r < d; ++r) dot += u[std::size_t(r)] * col[std::size_t(k)][std::size_t(r)];
+      for (int r = 0; r < d; ++r) u[std::size_t(r)] -= dot * col[std::size_t(k)][std::size_t(r)];
+    }
+    double len = 0;
+    for (int r = 0; r < d; ++r) len += u[std::size_t(r)] * u[std::size_t(r)];
+    for (int r = 0; r < d; ++r) u[std::size_t(r)] /= std::sqrt(len);
+  }
+  ExactAffine g;
+  g.d = d;
+  g.a.assign(std::size_t(d * d), 0);
+  for (int r = 0; r < d; ++r)
+    for (int c = 0; c < d; ++c) g.a[std::size_t(r * d + c)] = col[std::size_t(c)][std::size_t(r)];
+  g.b.assign(std::size_t(d), 0);
+  for (int r = 0; r < d; ++r) {
+    double b = 0;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      b += q[k][r];
+      for (int c = 0; c < d; ++c) b -= col[std::size_t(c)][std::size_t(r)] * p[k][c];
+    }
+    g.b[std::size_t(r)] = b / double(p.size());
+  }
+  return g;
+}
+
+/// Whether A^T A = I within `slack` in every entry (in doubles).
+bool nearly_orthogonal(const ExactAffine& f, double slack) {
+  for (int r = 0; r < f.d; ++r)
+    for (int c = 0; c < f.d; ++c) {
+      double s = 0;
+      for (int k = 0; k < f.d; ++k) s += f.at(k, r).get_d() * f.at(k, c).get_d();
+      if (std::abs(s - (r == c ? 1 : 0)) > slack) return false;
+    }
+  return true;
+}
+
+double diameter(const mesh::Mesh& m) {
+  const int d = m.point_dimension;
+  std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (std::size_t v = 0; v < m.vertex_count(); ++v)
+    for (int c = 0; c < d; ++c) {
+      lo[std::size_t(c)] = std::min(lo[std::size_t(c)], m.vertex(v)[c]);
+      hi[std::size_t(c)] = std::max(hi[std::size_t(c)], m.vertex(v)[c]);
+    }
+  double l2 = 0;
+  for (int c = 0; c < d; ++c)
+    l2 += (hi[std::size_t(c)] - lo[std::size_t(c)]) * (hi[std::size_t(c)] - lo[std::size_t(c)]);
+  return std::sqrt(l2);
+}
+
+/// Any congruence sends j's first cell onto some cell of i, corner to corner: calls
+/// `attempt(f, p, q)` with the affine map f (over the rationals) from j's first cell's corners p
+/// onto each cell of i whose sorted edge lengths match to `relative`, corners q in every order;
+/// returns the first result that holds a value.
+template <class Attempt>
+std::optional<Found> over_corner_matches(const mesh::Mesh& onto, const mesh::Mesh& from,
+                                         double relative, Attempt&& attempt) {
+  const int d = from.point_dimension;
+  std::vector<const double*> p;
+  for (int k = 0; k <= d; ++k) p.push_back(from.vertex(std::size_t(from.cell(0)[k])));
+  const auto lengths = edge_lengths(from, 0, d);
+  for (std::size_t c = 0; c < onto.cell_count(); ++c) {
+    if (!similar(lengths, edge_lengths(onto, c, d), relative)) continue;
+    std::vector<int> order(std::size_t(d + 1));
+    std::iota(order.begin(), order.end(), 0);
+    do {
+      std::vector<const double*> q;
+      for (int k : order) q.push_back(onto.vertex(std::size_t(onto.cell(c)[k])));
+      if (const auto f = affine_from_corners(p, q, d))
+        if (auto found = attempt(*f, p, q)) return found;
+    } while (std::next_permutation(order.begin(), order.end()));
+  }
+  return std::nullopt;
+}
+
+/// R with R(X_j) = X_i up to `tolerance` times i's diameter: solved from j's first cell and a
+/// cell of i as in the exact search, nearly orthogonal (1e-6: a copy scaled by more than the
+/// tolerance is refused by the vertices), made orthonormal, and accepted when it sends every
+/// vertex of j within that distance of a distinct vertex of i and every cell onto a cell.
+std::optional<Found> find_congruence_to_rounding(const mesh::Mesh& onto, const mesh::Mesh& from,
+                                                 const std::set<std::vector<IndexType>>& cells,
+                                                 double tolerance) {
+  const int d = from.point_dimension;
+  const RoundedLookup lookup(onto, tolerance * diameter(onto));
+  if (!(lookup.eps > 0)) return std::nullopt;
+  const auto attempt = [&](const ExactAffine& f, const std::vector<const double*>& p,
+                           const std::vector<const double*>& q) -> std::optional<Found> {
+    if (!nearly_orthogonal(f, 1e-6)) return std::nullopt;
+    const auto r = orthonormal(f, p, q);
+    std::vector<IndexType> image(from.vertex_count());
+    std::vector<char> hit(onto.vertex_count(), 0);
+    for (std::size_t v = 0; v < from.vertex_count(); ++v) {
+      double y[3] = {0, 0, 0};
+      for (int row = 0; row < d; ++row) {
+        y[row] = r.b[std::size_t(row)].get_d();
+        for (int col = 0; col < d; ++col) y[row] += r.at(row, col).get_d() * from.vertex(v)[col];
+      }
+      const auto w = lookup.near(y);
+      if (!w || hit[std::size_t(*w)]) return std::nullopt;
+      hit[std::size_t(*w)] = 1;
+      image[v] = *w;
+    }
+    for (std::size_t k = 0; k < from.cell_count(); ++k)
+      if (!cells.count(sorted_cell(from, k, d, &image))) return std::nullopt;
+    return Found{r, image};
+  };
+  return over_corner_matches(onto, from, std::max(1e-9, 16 * tolerance), attempt);
+}
+
+std::optional<Found> find_congruence(const TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j,
+                                     double tolerance) {
   const auto &onto = t.templated.templates.at(i).mesh, &from = t.templated.templates.at(j).mesh;
   const int d = from.point_dimension;
   if (onto.point_dimension != d || onto.vertex_count() != from.vertex_count() ||
@@ -209,23 +369,17 @@ std::optional<Found> find_congruence(const TemplatedMeshCompactSvb& t, std::size
   std::set<std::vector<IndexType>> cells;
   for (std::size_t c = 0; c < onto.cell_count(); ++c) cells.insert(sorted_cell(onto, c, d));
   if (cells.size() != onto.cell_count()) return std::nullopt;
-  // Any congruence sends j's first cell onto some cell of i, corner to corner: try them all.
-  std::vector<const double*> p;
-  for (int k = 0; k <= d; ++k) p.push_back(from.vertex(std::size_t(from.cell(0)[k])));
-  const auto lengths = edge_lengths(from, 0, d);
-  for (std::size_t c = 0; c < onto.cell_count(); ++c) {
-    if (!similar(lengths, edge_lengths(onto, c, d))) continue;
-    std::vector<int> order(std::size_t(d + 1));
-    std::iota(order.begin(), order.end(), 0);
-    do {
-      std::vector<const double*> q;
-      for (int k : order) q.push_back(onto.vertex(std::size_t(onto.cell(c)[k])));
-      const auto f = affine_from_corners(p, q, d);
-      if (!f || !f->is_orthogonal()) continue;
-      if (auto image = vertex_map(*f, from, onto, where, cells)) return Found{*f, *image};
-    } while (std::next_permutation(order.begin(), order.end()));
-  }
-  return std::nullopt;
+  const auto exact =
+      over_corner_matches(onto, from, 1e-9,
+                          [&](const ExactAffine& f, const std::vector<const double*>&,
+                              const std::vector<const double*>&) -> std::optional<Found> {
+                            if (!f.is_orthogonal()) return std::nullopt;
+                            if (auto image = vertex_map(f, from, onto, where, cells))
+                              return Found{f, *image};
+                            return std::nullopt;
+                          });
+  if (exact || !(tolerance > 0)) return exact;
+  return find_congruence_to_rounding(onto, from, cells, tolerance);
 }
 
 /// T ∘ R^{-1} with R(x) = A x + b orthogonal: y -> M A^T y + (t − M A^T b), over the rationals
@@ -274,13 +428,15 @@ void merge_by(TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j, const Fo
 } // namespace
 
 std::optional<TemplateCongruence> template_congruence(const TemplatedMeshCompactSvb& t,
-                                                      std::size_t i, std::size_t j) {
-  const auto r = find_congruence(t, i, j);
+                                                      std::size_t i, std::size_t j,
+                                                      double tolerance) {
+  const auto r = find_congruence(t, i, j, tolerance);
   if (!r) return std::nullopt;
   return TemplateCongruence{r->vertex, r->motion.is_identity()};
 }
 
-void merge_congruent_templates(TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j) {
+void merge_congruent_templates(TemplatedMeshCompactSvb& t, std::size_t i, std::size_t j,
+                               double tolerance) {
   const auto nt = t.templated.templates.size();
   if (i == j || i >= nt || j >= nt)
     throw std::invalid_argument("merge_congruent_templates: needs two distinct templates below " +
@@ -290,15 +446,17 @@ void merge_congruent_templates(TemplatedMeshCompactSvb& t, std::size_t i, std::s
   if (!t.is_valid(&why))
     throw std::invalid_argument("merge_congruent_templates: the templated mesh is not valid: " +
                                 why.str());
-  const auto r = find_congruence(t, i, j);
+  const auto r = find_congruence(t, i, j, tolerance);
   if (!r)
-    throw std::invalid_argument("merge_congruent_templates: templates " + std::to_string(i) +
-                                " and " + std::to_string(j) +
-                                " are not congruent by an exact motion");
+    throw std::invalid_argument(
+        "merge_congruent_templates: templates " + std::to_string(i) + " and " + std::to_string(j) +
+        (tolerance > 0
+             ? " are not congruent up to " + std::to_string(tolerance) + " of the diameter"
+             : " are not congruent by an exact motion"));
   merge_by(t, i, j, *r);
 }
 
-std::size_t merge_congruent_templates(TemplatedMeshCompactSvb& t) {
+std::size_t merge_congruent_templates(TemplatedMeshCompactSvb& t, double tolerance) {
   std::ostringstream why;
   if (!t.is_valid(&why))
     throw std::invalid_argument("merge_congruent_templates: the templated mesh is not valid: " +
@@ -307,7 +465,7 @@ std::size_t merge_congruent_templates(TemplatedMeshCompactSvb& t) {
   for (std::size_t j = 1; j < t.templated.templates.size();) {
     std::optional<Found> r;
     std::size_t i = 0;
-    while (i < j && !(r = find_congruence(t, i, j))) ++i;
+    while (i < j && !(r = find_congruence(t, i, j, tolerance))) ++i;
     if (!r) {
       ++j;
       continue;

@@ -1,7 +1,7 @@
 // symmesh adapt IN.tmesh [--clone K]... [--split-where EXPR]... [--refine-where EXPR]... [--smooth
 // N] [--improve]
-//   [--delaunay] [--merge-identical] [--merge-congruent] -o OUT.tmesh [--vtu OUT.vtu] [--report
-//   R.json] [--max-rounds N] [--quiet]
+//   [--delaunay] [--merge-identical] [--merge-congruent [--congruence-tolerance REL]] -o OUT.tmesh
+//   [--vtu OUT.vtu] [--report R.json] [--max-rounds N] [--quiet]
 // Section 5.2 / Technique 5.8 on a generated templated mesh — spec/adaptation.md#adapt-command
 #include "symmesh/adapt/templated_mesh_adaptation.h"
 #include "symmesh/adapt/tmesh_template_cloning.h"
@@ -25,6 +25,7 @@ struct AdaptOptions {
   std::vector<std::string> refine_where, split_where;
   std::vector<std::size_t> clone; ///< instances, numbered as in the input
   std::size_t smooth = 0, max_rounds = 64, improve_rounds = 8;
+  double congruence_tolerance = 0; ///< --merge-congruent up to this fraction of the diameter
   bool delaunay = false, improve = false, merge_identical = false, merge_congruent = false,
        quiet = false;
 };
@@ -46,6 +47,16 @@ bool options_ok(const AdaptOptions& o) {
   }
   if (!o.vtu.empty() && extension(o.vtu) != ".vtu") {
     print_error("adapt: --vtu " + o.vtu + ": expected a .vtu file name");
+    return false;
+  }
+  if (!(o.congruence_tolerance >= 0 && o.congruence_tolerance < 1e-3)) {
+    print_error("adapt: --congruence-tolerance " + std::to_string(o.congruence_tolerance) +
+                ": must be at least 0 and below 1e-3 (a fraction of the template's diameter; "
+                "1e-9 covers rounding)");
+    return false;
+  }
+  if (o.congruence_tolerance > 0 && !o.merge_congruent) {
+    print_error("adapt: --congruence-tolerance: applies to --merge-congruent, which is not given");
     return false;
   }
   if (!o.delaunay && !o.improve && o.smooth == 0 && o.refine_where.empty() && o.clone.empty() &&
@@ -197,8 +208,8 @@ int run_adapt(const AdaptOptions& o) {
         return adapt::merge_identical_templates(m);
       });
     if (o.merge_congruent)
-      merge_step("merge-congruent", "merge_congruent", [](mesh::TemplatedMeshCompactSvb& m) {
-        return adapt::merge_congruent_templates(m);
+      merge_step("merge-congruent", "merge_congruent", [&](mesh::TemplatedMeshCompactSvb& m) {
+        return adapt::merge_congruent_templates(m, o.congruence_tolerance);
       });
     std::ostringstream why;
     if (!t.is_valid(&why)) throw std::logic_error("the adapted mesh is not valid: " + why.str());
@@ -295,6 +306,11 @@ void add_adapt(CLI::App& app, int& exit_code) {
                 "R (R(X_j) = X_i with the coordinates taken exactly: translations, mirrors, signed "
                 "permutations; no tolerance) into one, the merged instances' transformations "
                 "composed with R^-1 (Section 5.2.1)");
+  cmd->add_option("--congruence-tolerance", o->congruence_tolerance,
+                  "--merge-congruent: also merge templates congruent only up to this fraction of "
+                  "the template's diameter (e.g. 1e-9: copies rotated by 2*pi/n whose coordinates "
+                  "were rounded); R is made orthonormal and the merged instances' points move by "
+                  "that much at most. Default 0: exact motions only");
   cmd->add_option(
          "--max-rounds", o->max_rounds,
          "Technique 5.8: rounds of interface insertions before giving up (exit 1); 0 = flips only")
