@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -96,16 +97,20 @@ struct SurfaceBoundary {
   std::vector<std::optional<FacePlane<FT>>> facet_plane;
   std::vector<std::shared_ptr<const std::vector<std::array<FT, 2>>>> facet_st;
   std::vector<std::array<std::size_t, 3>> triangles;
-  std::vector<std::size_t> triangle_face;                      ///< the 2-face each triangle lies in
-  std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>> id_of; ///< vertices and line points
+  std::vector<std::size_t> triangle_face; ///< the 2-face each triangle lies in
+  /// vertices and line points, when line_meshes_3 is asked for it (the merge method looks points
+  /// up; generation carries ids along the face action instead)
+  std::map<P3<FT>, std::size_t, core::PointLess<FT, 3>> id_of;
 };
 
 template <class FT>
 SurfaceBoundary<FT> line_meshes_3(const core::BoundarySubdivision<FT, 3>& sd, const FT& h2,
-                                  double h, const std::set<FT>& even_lengths) {
+                                  double h, const std::set<FT>& even_lengths,
+                                  bool point_index = true) {
   SurfaceBoundary<FT> tb;
   tb.exact = sd.points;
-  for (std::size_t v = 0; v < tb.exact.size(); ++v) tb.id_of.emplace(tb.exact[v], v);
+  if (point_index)
+    for (std::size_t v = 0; v < tb.exact.size(); ++v) tb.id_of.emplace(tb.exact[v], v);
   tb.lines.resize(sd.faces.size());
   tb.facet_first.assign(sd.faces.size(), 0);
   tb.facet_count.assign(sd.faces.size(), 0);
@@ -126,7 +131,7 @@ SurfaceBoundary<FT> line_meshes_3(const core::BoundarySubdivision<FT, 3>& sd, co
     line.first = tb.exact.size();
     for (std::size_t k = 1; k < line.n; ++k) {
       tb.exact.push_back(line_point<FT>(sd.points[line.a], sd.points[line.b], k, line.n));
-      tb.id_of.emplace(tb.exact.back(), tb.exact.size() - 1);
+      if (point_index) tb.id_of.emplace(tb.exact.back(), tb.exact.size() - 1);
     }
   }
   return tb;
@@ -244,8 +249,22 @@ struct FaceClass {
   core::FaceRef first;
   std::vector<core::FaceRef> members;
   std::map<core::FaceRef, core::RigidTransformation<FT, 3>> comp;
+  /// Per member, the faces that comp sends the first face's closure faces onto (in the order of
+  /// its `closure`): the letters' face actions composed along the same BFS tree, so that the
+  /// line-mesh points of a member's boundary are found by index, without evaluating comp.
+  std::map<core::FaceRef, std::vector<std::size_t>> closure_image;
   std::vector<core::RigidTransformation<FT, 3>> generators;
 };
+
+/// δ(f, l): the face that letter l sends face f onto (letter_action is ordered by f).
+inline std::size_t face_image(const std::vector<std::pair<std::size_t, std::size_t>>& action,
+                              std::size_t f) {
+  const auto it = std::lower_bound(action.begin(), action.end(), std::make_pair(f, std::size_t(0)));
+  if (it == action.end() || it->first != f)
+    throw std::logic_error("Algorithm 5.7: a face in the closure of a mapped 2-face is not in "
+                           "the mapping's domain");
+  return it->second;
+}
 
 template <class FT>
 std::vector<FaceClass<FT>> face_classes(const core::BoundaryPatchPartition<FT, 3>& bpp) {
@@ -270,12 +289,17 @@ std::vector<FaceClass<FT>> face_classes(const core::BoundaryPatchPartition<FT, 3
       c.first = {t, f};
       c.members.push_back(c.first);
       c.comp.emplace(c.first, Map());
+      c.closure_image.emplace(c.first, sds[t].faces[f].closure);
       done[t][f] = true;
       for (std::size_t k = 0; k < c.members.size(); ++k) {
         const auto cur = c.members[k];
         for (const auto& [l, next] : arrows[cur.t][cur.f]) {
           if (c.comp.count(next)) continue;
           c.comp.emplace(next, bpp.mappings[l].map * c.comp.at(cur));
+          std::vector<std::size_t> image;
+          for (std::size_t g : c.closure_image.at(cur))
+            image.push_back(face_image(bpp.letter_action[l], g));
+          c.closure_image.emplace(next, std::move(image));
           done[next.t][next.f] = true;
           c.members.push_back(next);
         }
@@ -363,6 +387,37 @@ FacetMesh<FT> mesh_symmetric_facet(const core::TemplatedStructure<FT, 3>& x,
   return out;
 }
 
+/// The ids, in the member's template, of the line-mesh points on the closure of face f (vertices
+/// and the points of its edge faces) — the images under the class composition, found from the
+/// faces it sends the closure onto (`image`, in closure order): a vertex goes to the image
+/// vertex; the k-th point of an edge from a to b goes to the k-th point of the image edge from
+/// the image of a (line_point is affine in its ends and congruent edges get the same number of
+/// parts, so it is the same exact point as the mapped one).
+template <class FT>
+std::map<std::size_t, std::size_t>
+boundary_point_images(const core::BoundarySubdivision<FT, 3>& from_sd,
+                      const SurfaceBoundary<FT>& from,
+                      const core::BoundarySubdivision<FT, 3>& to_sd, const SurfaceBoundary<FT>& to,
+                      std::size_t f, const std::vector<std::size_t>& image) {
+  const auto& closure = from_sd.faces[f].closure;
+  std::map<std::size_t, std::size_t> vertex; // closure vertex -> image vertex
+  for (std::size_t k = 0; k < closure.size(); ++k)
+    if (from_sd.faces[closure[k]].dimension == 0)
+      vertex[from_sd.faces[closure[k]].vertices[0]] = to_sd.faces[image[k]].vertices[0];
+  std::map<std::size_t, std::size_t> out(vertex.begin(), vertex.end());
+  for (std::size_t k = 0; k < closure.size(); ++k) {
+    if (from_sd.faces[closure[k]].dimension != 1) continue;
+    const FaceLine &a = from.lines[closure[k]], &b = to.lines[image[k]];
+    if (to_sd.faces[image[k]].dimension != 1 || a.n != b.n || !vertex.count(a.a))
+      throw std::logic_error("Algorithm 5.7: a mapping does not send an edge face's line mesh "
+                             "onto an edge face's line mesh");
+    const auto ia = line_ids(a), ib = line_ids(b);
+    const bool same = vertex.at(a.a) == b.a;
+    for (std::size_t q = 0; q < ia.size(); ++q) out[ia[q]] = ib[same ? q : ia.size() - 1 - q];
+  }
+  return out;
+}
+
 /// Surface meshes of all 2-faces (spec/generation.md#surface-meshes): each class is meshed once
 /// at its first face — symmetrically under the face's group when other chains of mappings reach
 /// a member than the BFS tree's (spec/generation.md#symmetric-surface-meshes) — and carried to
@@ -385,12 +440,14 @@ void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
     for (const auto& g : classes[k].members) {
       auto& tb = boundaries[g.t];
       const auto& map = classes[k].comp.at(g);
+      const auto image = boundary_point_images(sds[t], boundaries[t], sds[g.t], tb, f,
+                                               classes[k].closure_image.at(g));
       std::vector<std::size_t> ids;
       for (std::size_t id : rep.boundary_ids) {
-        const auto it = tb.id_of.find(map(boundaries[t].exact[id]));
-        if (it == tb.id_of.end())
-          throw std::logic_error("Algorithm 5.7: a mapped surface-mesh boundary point is not a "
-                                 "line-mesh point of the image face");
+        const auto it = image.find(id);
+        if (it == image.end())
+          throw std::logic_error("Algorithm 5.7: a surface-mesh boundary point of a 2-face is "
+                                 "not on its closure's line meshes");
         ids.push_back(it->second);
       }
       tb.facet_first[g.f] = tb.exact.size();

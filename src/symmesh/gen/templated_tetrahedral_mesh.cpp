@@ -355,7 +355,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   const auto even = mirrored_edge_lengths(bpp, classes, groups);
   std::vector<SurfaceBoundary<FT>> boundaries;
   for (const auto& sd : bpp.subdivisions)
-    boundaries.push_back(line_meshes_3<FT>(sd, h2, o.size, even));
+    boundaries.push_back(line_meshes_3<FT>(sd, h2, o.size, even, false));
   surface_meshes(x, bpp, classes, groups, boundaries, h2, o.size, o.min_angle_deg);
   if (o.perturb_one_surface_mesh) perturb_one_surface_mesh(bpp, boundaries);
   if (o.perturb_one_face_frame) perturb_one_face_frame(bpp, boundaries);
