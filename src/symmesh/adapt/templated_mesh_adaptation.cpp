@@ -596,6 +596,7 @@ struct SlidingLink {
 };
 
 /// Unit outward normal of a 3D template-boundary facet: its cell's fourth vertex lies behind it.
+/// NaN for a facet flat to zero area (the tests below then fail on it).
 std::array<double, 3> outward_normal(const Work& w, const std::vector<IndexType>& f) {
   auto n = cross3(sub3(w.p(f[1]), w.p(f[0])), sub3(w.p(f[2]), w.p(f[0])));
   const auto cells = w.cells_with({f[0], f[1], f[2]});
@@ -646,12 +647,13 @@ bool strictly_between(const Work& w, IndexType a, IndexType o, IndexType b, doub
 }
 
 /// The facets through v that lie in the plane through v with unit normal n, up to `tol` L, with
-/// their outward normals within `tol` of n (a fold is not flat).
+/// their outward normals within `tol` of n (a fold is not flat). Written so that a NaN normal
+/// (a facet of zero area) fails.
 bool in_plane_to_rounding(const Work& w, const std::vector<IndexType>& f, IndexType v,
                           const std::array<double, 3>& n, double tol, double l) {
-  if (1 - dot3(outward_normal(w, f), n) > tol) return false;
+  if (!(1 - dot3(outward_normal(w, f), n) <= tol)) return false;
   for (IndexType u : f)
-    if (std::abs(dot3(sub3(w.p(u), w.p(v)), n)) > tol * l) return false;
+    if (!(std::abs(dot3(sub3(w.p(u), w.p(v)), n)) <= tol * l)) return false;
   return true;
 }
 
