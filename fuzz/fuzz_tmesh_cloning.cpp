@@ -7,7 +7,10 @@
 //     instances and throw std::invalid_argument otherwise (the documented precondition);
 //   - merge two templates: must succeed when they are distinct and identical, and throw
 //     std::invalid_argument otherwise;
-//   - merge every identical template;
+//   - merge every identical template, or (one in four) every template congruent up to 1e-9 of
+//     its diameter (`--merge-congruent --congruence-tolerance 1e-9`: exact motions first, then
+//     up to rounding, which may move AT's points of the merged instances by rounding, so AT is
+//     then compared by the certificate only);
 //   - split a template along a pseudo-random cell subset: must succeed when the subset is
 //     non-empty and proper, and throw std::invalid_argument otherwise;
 //   - bisect one template edge (with its related edges): the templates cloned before now differ.
@@ -137,6 +140,10 @@ bool apply(TemplatedMeshCompactSvb& t, const std::uint8_t* op) {
     return true;
   }
   case 2:
+    if (op[1] % 4 == 3) {
+      adapt::merge_congruent_templates(t, 1e-9);
+      return false;
+    }
     adapt::merge_identical_templates(t);
     return true;
   case 3: { // split a template along about one in k of its cells, k = 2..7
