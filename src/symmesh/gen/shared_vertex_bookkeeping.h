@@ -15,10 +15,16 @@
 #include "symmesh/mesh/templated_mesh.h"
 #include "symmesh/mesh/union_find.h"
 
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -172,22 +178,142 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, D>& x,
 /// is vertex q of copy l when T_{i,l}^-1 ∘ T_{i,k} sends p to q (exact, over the template's exact
 /// boundary points `boundary_points[i]`, in local vertex ids). On a mirror the relative map is
 /// the reflection that fixes the mirror pointwise (Lemma 6.1).
+/// A template's boundary points, found by exact equality among the few whose certified interval
+/// boxes meet the query's: a grid over the boxes' midpoints (cells of 2^-20 of the points' extent)
+/// prunes, the exact comparison decides. Equal exact values have intersecting intervals, so it
+/// finds what an exact ordered map finds, without the map's exact comparisons of near points (or
+/// its K_m evaluations of every probe's neighbours). A probe whose box spans more than four cells
+/// per axis falls back to the exact map.
+template <class FT, int D>
+class BoundaryPointLocator {
+public:
+  explicit BoundaryPointLocator(const std::vector<core::Point<FT, D>>& pts) : pts_(pts) {
+    double extent = 0;
+    boxes_.reserve(pts.size());
+    for (const auto& p : pts) {
+      Box b;
+      for (int d = 0; d < D; ++d) {
+        b[std::size_t(d)] = CGAL::to_interval(p[d]);
+        reach_ = std::max(reach_, b[std::size_t(d)].second - b[std::size_t(d)].first);
+        extent = std::max(extent, std::abs(b[std::size_t(d)].first));
+      }
+      boxes_.push_back(b);
+    }
+    cell_ = std::max(extent, 1e-300) * 0x1p-20;
+    for (std::size_t v = 0; v < pts.size(); ++v) grid_[key(boxes_[v])].push_back(v);
+  }
+
+  using Box = std::array<std::pair<double, double>, D>;
+
+  /// The certified interval box of point v.
+  const Box& box(std::size_t v) const { return boxes_[v]; }
+
+  /// The index of the point equal to q, if any.
+  std::optional<std::size_t> find(const core::Point<FT, D>& q) const {
+    Box b;
+    for (int d = 0; d < D; ++d) b[std::size_t(d)] = CGAL::to_interval(q[d]);
+    return find(b, [&] { return q; });
+  }
+
+  /// The index of the point equal to the point `exact()` builds, whose value lies in box b:
+  /// exact() is called only when some point's box meets b.
+  template <class Exact>
+  std::optional<std::size_t> find(const Box& b, Exact&& exact) const {
+    std::array<std::int64_t, D> lo{}, hi{};
+    std::optional<core::Point<FT, D>> q;
+    const auto probe = [&]() -> const core::Point<FT, D>& {
+      if (!q) q = exact();
+      return *q;
+    };
+    for (int d = 0; d < D; ++d) {
+      const double l = std::floor((b[std::size_t(d)].first - reach_) / cell_);
+      const double h = std::floor((b[std::size_t(d)].second + reach_) / cell_);
+      if (!(h - l <= 4) || !(std::abs(l) < 0x1p62) || !(std::abs(h) < 0x1p62))
+        return exact_find(probe());
+      lo[std::size_t(d)] = std::int64_t(l);
+      hi[std::size_t(d)] = std::int64_t(h);
+    }
+    std::array<std::int64_t, D> k = lo;
+    for (;;) {
+      if (const auto it = grid_.find(k); it != grid_.end())
+        for (std::size_t v : it->second)
+          if (meets(boxes_[v], b) && pts_[v] == probe()) return v;
+      int d = 0;
+      while (d < D && k[std::size_t(d)] == hi[std::size_t(d)])
+        k[std::size_t(d)] = lo[std::size_t(d)], ++d;
+      if (d == D) return std::nullopt;
+      ++k[std::size_t(d)];
+    }
+  }
+
+private:
+  static bool meets(const Box& a, const Box& b) {
+    for (int d = 0; d < D; ++d)
+      if (a[std::size_t(d)].second < b[std::size_t(d)].first ||
+          b[std::size_t(d)].second < a[std::size_t(d)].first)
+        return false;
+    return true;
+  }
+  std::array<std::int64_t, D> key(const Box& b) const {
+    std::array<std::int64_t, D> k{};
+    for (int d = 0; d < D; ++d)
+      k[std::size_t(d)] = std::int64_t(std::floor(
+          (b[std::size_t(d)].first + (b[std::size_t(d)].second - b[std::size_t(d)].first) / 2) /
+          cell_));
+    return k;
+  }
+  std::optional<std::size_t> exact_find(const core::Point<FT, D>& q) const {
+    if (exact_.empty())
+      for (std::size_t v = 0; v < pts_.size(); ++v) exact_.emplace(pts_[v], v);
+    const auto it = exact_.find(q);
+    if (it == exact_.end()) return std::nullopt;
+    return it->second;
+  }
+
+  const std::vector<core::Point<FT, D>>& pts_;
+  std::vector<Box> boxes_;
+  double reach_ = 0, cell_ = 1;
+  std::map<std::array<std::int64_t, D>, std::vector<std::size_t>> grid_;
+  mutable std::map<core::Point<FT, D>, std::size_t, core::PointLess<FT, D>> exact_;
+};
+
 template <class FT, int D>
 void copy_candidates(const core::TemplatedStructure<FT, D>& x,
                      const std::vector<std::vector<core::Point<FT, D>>>& boundary_points,
                      std::vector<SvbCandidate>& out) {
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     const auto& pts = boundary_points[i];
-    std::map<core::Point<FT, D>, std::size_t, core::PointLess<FT, D>> local;
-    for (std::size_t v = 0; v < pts.size(); ++v) local.emplace(pts[v], v);
+    const BoundaryPointLocator<FT, D> local(pts);
     const auto& list = x.instances[i];
+    using I = CGAL::Interval_nt<false>;
     for (std::size_t k = 0; k < list.size(); ++k)
       for (std::size_t l = k + 1; l < list.size(); ++l) {
         const auto m = list[l].transformation.inverse() * list[k].transformation;
+        // m's entries as intervals: the image box of each point costs a few interval operations,
+        // and the exact image is built only for the points whose box meets a stored one.
+        std::array<std::array<I, D + 1>, D> mi;
+        for (int r = 0; r < D; ++r) {
+          for (int c = 0; c < D; ++c)
+            mi[std::size_t(r)][std::size_t(c)] = I(CGAL::to_interval(m.matrix()[r][c]));
+          mi[std::size_t(r)][std::size_t(D)] = I(CGAL::to_interval(m.translation_part()[r]));
+        }
+        std::vector<typename BoundaryPointLocator<FT, D>::Box> image(pts.size());
+        {
+          // Upward rounding for the unprotected intervals, only around these interval operations
+          // (the exact comparisons below expect the default rounding).
+          CGAL::Protect_FPU_rounding<true> upward;
+          for (std::size_t v = 0; v < pts.size(); ++v)
+            for (int r = 0; r < D; ++r) {
+              I s = mi[std::size_t(r)][std::size_t(D)];
+              for (int c = 0; c < D; ++c)
+                s += mi[std::size_t(r)][std::size_t(c)] * I(local.box(v)[std::size_t(c)]);
+              image[v][std::size_t(r)] = {s.inf(), s.sup()};
+            }
+        }
         SvbPairs pairs;
         for (std::size_t v = 0; v < pts.size(); ++v)
-          if (const auto it = local.find(m(pts[v])); it != local.end())
-            pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(it->second));
+          if (const auto w = local.find(image[v], [&] { return m(pts[v]); }))
+            pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(*w));
         if (!pairs.empty())
           out.push_back({{i, k}, {i, l}, std::make_shared<const SvbPairs>(std::move(pairs))});
       }
