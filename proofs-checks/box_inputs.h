@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
@@ -184,6 +185,17 @@ inline rc::Gen<BoxInput> block_on_base(int dimension) {
       },
       rc::gen::inRange(4, 7), rc::gen::inRange(1, 3), rc::gen::inRange(2, 5),
       rc::gen::inRange(2, 5), rc::gen::inRange(1, 4), rc::gen::inRange(0, 3));
+}
+
+/// A rotation that is no signed permutation, row-major d × d, rounded: by `degrees` about the
+/// origin (2D) or about the axis (1, 2, 3) (3D). Turning a box mesh by it leaves no face exactly
+/// flat in the doubles (the slanted-plane properties of Section 5.2.1 and 5.2.2).
+inline std::vector<double> turning_rotation(int d, int degrees) {
+  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a), k = 1 - c;
+  if (d == 2) return {c, -s, s, c};
+  const double x = 1 / std::sqrt(14.0), y = 2 * x, z = 3 * x;
+  return {c + x * x * k,     x * y * k - z * s, x * z * k + y * s, y * x * k + z * s, c + y * y * k,
+          y * z * k - x * s, z * x * k - y * s, z * y * k + x * s, c + z * z * k};
 }
 
 /// The facets of exactly one cell of a template mesh of dimension d — its template boundary —

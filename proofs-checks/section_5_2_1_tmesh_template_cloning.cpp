@@ -286,13 +286,7 @@ Cells structure_instance_cells_to_1e9(const mesh::TemplatedMeshCompactSvb& t) {
 /// moved by 1e-6 of the template's extent along x too.
 void turn_template(mesh::TemplatedMeshCompactSvb& t, std::size_t ti, int degrees, bool nudge) {
   const int d = t.templated.point_dimension;
-  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a), k = 1 - c;
-  const double x = 1 / std::sqrt(14.0), y = 2 * x, z = 3 * x;
-  const std::vector<double> r =
-      d == 2 ? std::vector<double>{c, -s, s, c}
-             : std::vector<double>{c + x * x * k,     x * y * k - z * s, x * z * k + y * s,
-                                   y * x * k + z * s, c + y * y * k,     y * z * k - x * s,
-                                   z * x * k - y * s, z * y * k + x * s, c + z * z * k};
+  const auto r = boxes::turning_rotation(d, degrees);
   auto& mt = t.templated.templates[ti];
   auto& m = mt.mesh;
   double lo = INFINITY, hi = -INFINITY;

@@ -116,15 +116,6 @@ void boundary_smoothing_keeps_the_interface(const BoxInput& in, int sweeps, bool
   SYMMESH_PROOF_ASSERT(boxes::exact_measure(t) == in.measure(), failure, no_picture);
 }
 
-/// y = R x for a rotation R by `degrees` (in 3D about the axis (1, 2, 3)), rounded.
-std::vector<double> rotation(int d, int degrees) {
-  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
-  if (d == 2) return {c, -s, s, c};
-  const double n = std::sqrt(14.0), x = 1 / n, y = 2 / n, z = 3 / n, k = 1 - c;
-  return {c + x * x * k,     x * y * k - z * s, x * z * k + y * s, y * x * k + z * s, c + y * y * k,
-          y * z * k - x * s, z * x * k - y * s, z * y * k + x * s, c + z * z * k};
-}
-
 std::vector<double> times(const std::vector<double>& a, const std::vector<double>& b, int d,
                           bool b_transposed = false) {
   std::vector<double> out(std::size_t(d * d), 0);
@@ -168,7 +159,7 @@ void slanted_boundary_smoothing(const BoxInput& in, int degrees, int sweeps, dou
   const int d = in.dimension;
   auto plain = in.generate();
   auto t = plain;
-  turn(t, rotation(d, degrees));
+  turn(t, boxes::turning_rotation(d, degrees));
   const double boundary = adapt::certify_conformity(t).boundary_measure;
   const mpq_class measure = boxes::exact_measure(t);
   std::vector<std::set<std::vector<mesh::IndexType>>> facets;

@@ -267,20 +267,8 @@ PYEOF
       --report "$TMP/$name.ri.json" --quiet \
     && "$BIN" adapt "$TMP/$name.r.tmesh" --merge-congruent -o "$TMP/$name.rm.tmesh" \
       --vtu "$TMP/$name.rm.vtu" --report "$TMP/$name.rm.json" 2> "$TMP/stderr" \
-    && $PY - "$TMP/$name" <<'PYEOF'
-import json, sys
-import meshio
-import numpy as np
-base = sys.argv[1]
-ri, rm = (json.load(open(f"{base}.{k}.json")) for k in ("ri", "rm"))
-nt = len(json.load(open(f"{base}.0.tmesh"))["templates"])
-assert ri["steps"][0]["merge_identical"] == 0, ri["steps"]
-assert rm["steps"][0] == {"merge_congruent": 1, "templates": nt}, rm["steps"]
-def cells(k):
-    m = meshio.read(f"{base}.{k}.vtu")
-    return sorted(tuple(sorted(tuple(np.round(m.points[v], 9)) for v in c)) for c in m.cells[0].data)
-assert cells("rm") == cells("0"), "congruent merging changed AT"
-PYEOF
+    && $PY tests/cli/merged_back_check.py "$TMP/$name" ri merge_identical rm \
+      "congruent merging changed AT"
   then
     grep -q "merge-congruent: 1 templates merged" "$TMP/stderr" \
       && pass "$name: a mirrored clone is merged back by --merge-congruent, AT unchanged" \
@@ -314,20 +302,8 @@ PYEOF
     && "$BIN" adapt "$TMP/$name.t.tmesh" --merge-congruent --congruence-tolerance 1e-9 \
       -o "$TMP/$name.tm.tmesh" --vtu "$TMP/$name.tm.vtu" --report "$TMP/$name.tm.json" \
       2> "$TMP/stderr" \
-    && $PY - "$TMP/$name" <<'PYEOF'
-import json, sys
-import meshio
-import numpy as np
-base = sys.argv[1]
-te, tm = (json.load(open(f"{base}.{k}.json")) for k in ("te", "tm"))
-nt = len(json.load(open(f"{base}.0.tmesh"))["templates"])
-assert te["steps"][0]["merge_congruent"] == 0, te["steps"]
-assert tm["steps"][0] == {"merge_congruent": 1, "templates": nt}, tm["steps"]
-def cells(k):
-    m = meshio.read(f"{base}.{k}.vtu")
-    return sorted(tuple(sorted(tuple(np.round(m.points[v], 9)) for v in c)) for c in m.cells[0].data)
-assert cells("tm") == cells("0"), "merging up to rounding changed AT"
-PYEOF
+    && $PY tests/cli/merged_back_check.py "$TMP/$name" te merge_congruent tm \
+      "merging up to rounding changed AT"
   then
     grep -q "merge-congruent: 1 templates merged" "$TMP/stderr" \
       && pass "$name: a clone rotated and rounded is merged back only with --congruence-tolerance, AT unchanged" \
