@@ -81,6 +81,45 @@ TEST(InterfacePieces, SharedVertexMeetIsCgalsIntersection) {
   EXPECT_GT(undecided, 100); // overlapping pairs exist, and they are left to CGAL
 }
 
+// The interval filters in front of those tests decide only what the exact intersection
+// confirms: a pair `certainly_apart` does not meet, and a pair sharing one vertex that
+// `certainly_meet_only_at` it meets in that point alone. Both filters decide many pairs (the
+// grid's coplanar and touching pairs included) and leave the others.
+TEST(InterfacePieces, IntervalFiltersAgreeWithCgal) {
+  Grid g(20261202);
+  int apart = 0, apart_undecided = 0, only_at = 0, only_at_undecided = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const auto a = g.triangle();
+    const bool coplanar = k % 2 == 0;
+    const auto other = [&] { return coplanar ? g.in_plane(a) : g.point(); };
+    std::vector<P3> b{other(), other(), other()};
+    if (!affinely_independent<Exact, 3>(b)) continue;
+    if (certainly_apart<Exact>(a, b)) {
+      ASSERT_FALSE(CGAL::do_intersect(triangle(a), triangle(b))) << "case " << k;
+      ++apart;
+    } else {
+      ++apart_undecided;
+    }
+    b[0] = a[std::size_t(k % 3)];
+    if (!affinely_independent<Exact, 3>(b)) continue;
+    const auto shared = shared_corners<Exact>(a, b);
+    if (shared.count != 1) continue;
+    const int ia = k % 3, ib = 0;
+    if (certainly_meet_only_at<Exact>(a, b, ia, ib)) {
+      const auto r = CGAL::intersection(triangle(a), triangle(b));
+      ASSERT_TRUE(r.has_value());
+      ASSERT_NE(boost::get<K::Point_3>(&*r), nullptr) << "case " << k << ": more than a point";
+      ++only_at;
+    } else {
+      ++only_at_undecided;
+    }
+  }
+  EXPECT_GT(apart, 200);
+  EXPECT_GT(apart_undecided, 200);
+  EXPECT_GT(only_at, 200);
+  EXPECT_GT(only_at_undecided, 100);
+}
+
 // The same triangle on both sides (vertices in another order) is its own intersection, and a
 // coplanar triangle with one vertex moved is never taken for it.
 TEST(InterfacePieces, SameTriangleIsItsIntersection) {

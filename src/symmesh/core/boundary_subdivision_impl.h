@@ -266,6 +266,10 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
   // in one of its triangles) and the cuts are constraints, the carrier's inner edges are not.
   const auto regions = flat_regions<FT>(tris);
   std::vector<Cdt<FT>> cdts(regions.size());
+  // Each vertex's point on the boundary: the 3D point it was inserted as, or — for a crossing of
+  // constraints that the triangulation made — the lift of its projection. Lifting every vertex
+  // divided by the plane's normal over K_m, and comparing the quotients with the input points
+  // evaluated those divisions exactly (most of the subdivision's time at K_128).
   std::vector<std::map<VertexHandle, Point<FT, 3>>> lifted(regions.size());
   std::vector<std::set<FaceHandle>> inside(regions.size());
   PointSet<FT, 3> all;
@@ -280,42 +284,59 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
         if (PointLess<FT, 3>()(b, a)) std::swap(a, b);
         ++uses[{a, b}];
       }
+    auto& known = lifted[k];
+    const auto insert = [&](const Point<FT, 3>& p) {
+      const VertexHandle h = cdt.insert(proj(p));
+      known.emplace(h, p);
+      return h;
+    };
     for (const auto& [edge, n] : uses) {
-      cdt.insert(proj(edge.first));
-      cdt.insert(proj(edge.second));
-      if (n == 1) cdt.insert_constraint(proj(edge.first), proj(edge.second));
+      const VertexHandle a = insert(edge.first), b = insert(edge.second);
+      if (n == 1) cdt.insert_constraint(a, b);
     }
     for (std::size_t t : regions[k]) {
       const auto& tri = tris[t];
       const typename K::Triangle_3 t3(cg(tri[0]), cg(tri[1]), cg(tri[2]));
       const auto tb = box_of<FT, 3>(tri);
       for (const auto& p : cuts.points)
-        if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) cdt.insert(proj(p));
+        if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) insert(p);
       for (const auto& [a, b] : cuts.segments) {
         if (!tb.overlaps(box_of<FT, 3>({a, b}))) continue;
         const auto corner = corner_cut<FT>(tri, a, b);
-        if (corner == CornerCut::edge) cdt.insert_constraint(proj(a), proj(b));
+        if (corner == CornerCut::edge) cdt.insert_constraint(insert(a), insert(b));
         if (corner != CornerCut::undecided) continue; // a corner only: already a vertex
         const auto r = CGAL::intersection(typename K::Segment_3(cg(a), cg(b)), t3);
         if (!r) continue;
         if (const P3* p = boost::get<P3>(&*r))
-          cdt.insert(proj(pt(*p)));
+          insert(pt(*p));
         else if (const auto* sg = boost::get<typename K::Segment_3>(&*r))
-          cdt.insert_constraint(proj(pt(sg->source())), proj(pt(sg->target())));
+          cdt.insert_constraint(insert(pt(sg->source())), insert(pt(sg->target())));
       }
     }
-    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      all.insert(lifted[k][v] = fr.lift(v->point().x(), v->point().y()));
-    // The region may be non-convex: keep the faces whose centroid lies in one of its triangles.
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+      const auto it = known.find(v);
+      all.insert(it != known.end() ? it->second
+                                   : (known[v] = fr.lift(v->point().x(), v->point().y())));
+    }
+    // The region may be non-convex: keep the faces whose centroid lies in one of its triangles,
+    // decided in the projection (one-to-one on the region's plane, which holds the centroid and
+    // every triangle of the region exactly): closed containment, no sign against the triangle's.
+    std::vector<std::array<P2, 3>> projected;
+    for (std::size_t t : regions[k])
+      projected.push_back({proj(tris[t][0]), proj(tris[t][1]), proj(tris[t][2])});
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
       const P2 c =
           CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-      const Point<FT, 3> q = fr.lift(c.x(), c.y());
-      for (std::size_t t : regions[k])
-        if (box_contains<FT, 3>(box_of<FT, 3>(tris[t]), q) && point_in_simplex<FT, 3>(tris[t], q)) {
+      for (const auto& q : projected) {
+        const auto turn = CGAL::orientation(q[0], q[1], q[2]);
+        bool in = true;
+        for (int e = 0; e < 3 && in; ++e)
+          in = CGAL::orientation(q[std::size_t(e)], q[std::size_t((e + 1) % 3)], c) != -turn;
+        if (in) {
           inside[k].insert(f);
           break;
         }
+      }
     }
   }
   BoundarySubdivision<FT, 3> s;

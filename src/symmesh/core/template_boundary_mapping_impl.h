@@ -15,6 +15,7 @@
 #include "symmesh/core/kernel.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Triangulation_vertex_base_2.h>
@@ -24,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <deque>
+#include <initializer_list>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -120,6 +122,106 @@ struct SharedCorners {
   int count = 0;
 };
 
+// Certified interval filters for the triangle pairs of neighbouring copies. Their boxes overlap
+// far beyond the interface, and most pairs are apart or meet only in a corner while lying in a
+// common plane (top and bottom faces of adjacent slices) or with a far corner in the other's
+// plane: there the exact tests start with an orientation that is exactly zero, which no filter
+// decides, so it was evaluated over K_m (a millisecond per pair at K_128). A filter decides only
+// what its enclosures prove and otherwise leaves the pair to the exact tests, so the pieces
+// found are those of the exact tests alone.
+using Enclosed = CGAL::Interval_nt<true>; // sets the rounding mode itself: values are certified
+using EnclosedVector = std::array<Enclosed, 3>;
+
+template <class FT>
+std::array<EnclosedVector, 3> enclosed_triangle(const PointVec<FT, 3>& t) {
+  std::array<EnclosedVector, 3> out;
+  for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t d = 0; d < 3; ++d) out[k][d] = Enclosed(CGAL::to_interval(t[k][d]));
+  return out;
+}
+
+inline EnclosedVector minus(const EnclosedVector& u, const EnclosedVector& v) {
+  return {u[0] - v[0], u[1] - v[1], u[2] - v[2]};
+}
+
+inline EnclosedVector cross_of(const EnclosedVector& u, const EnclosedVector& v) {
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+/// The sign of m · (q − o) when the enclosures prove it, else 0.
+inline int certain_side(const EnclosedVector& m, const EnclosedVector& o, const EnclosedVector& q) {
+  const EnclosedVector d = minus(q, o);
+  const Enclosed s = m[0] * d[0] + m[1] * d[1] + m[2] * d[2];
+  return s.inf() > 0 ? 1 : (s.sup() < 0 ? -1 : 0);
+}
+
+/// Whether the points `far` lie certainly strictly on one side of the plane through o with normal
+/// m and the points `near` certainly strictly on the other (the sides' signs, or 0).
+inline bool certainly_splits(const EnclosedVector& m, const EnclosedVector& o,
+                             std::initializer_list<const EnclosedVector*> near,
+                             std::initializer_list<const EnclosedVector*> far) {
+  int side = 0;
+  for (const auto* q : far) {
+    const int s = certain_side(m, o, *q);
+    if (s == 0 || (side != 0 && s != side)) return false;
+    side = s;
+  }
+  for (const auto* q : near)
+    if (certain_side(m, o, *q) != -side) return false;
+  return true;
+}
+
+/// Whether the enclosures prove two triangles disjoint: some plane has one triangle on its closed
+/// side and every corner of the other strictly beyond it — the plane of either triangle, or the
+/// plane through an edge of one that is orthogonal to its triangle (for coplanar triangles, a
+/// separating line of their plane).
+template <class FT>
+bool certainly_apart(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
+  const auto one_way = [](const std::array<EnclosedVector, 3>& t,
+                          const std::array<EnclosedVector, 3>& u) {
+    const EnclosedVector n = cross_of(minus(t[1], t[0]), minus(t[2], t[0]));
+    if (certainly_splits(n, t[0], {}, {&u[0], &u[1], &u[2]})) return true;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const EnclosedVector m = cross_of(minus(t[(i + 1) % 3], t[i]), n);
+      if (certainly_splits(m, t[i], {&t[(i + 2) % 3]}, {&u[0], &u[1], &u[2]})) return true;
+    }
+    return false;
+  };
+  const auto ea = enclosed_triangle<FT>(a), eb = enclosed_triangle<FT>(b);
+  return one_way(ea, eb) || one_way(eb, ea);
+}
+
+/// Whether the enclosures prove that two triangles with the common corner v = a[ia] = b[ib] meet
+/// only in v: some plane through v has the other corners of one strictly on one side and those
+/// of the other on the opposite closed side (in the plane of a triangle, or strictly across).
+/// Candidates: the triangles' planes, the planes through an edge at v orthogonal to its
+/// triangle, and the planes spanned by an edge at v of each triangle (those two edges in it meet
+/// only in v, being not parallel; the other two corners strictly on opposite sides).
+template <class FT>
+bool certainly_meet_only_at(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b, int ia, int ib) {
+  const auto ea = enclosed_triangle<FT>(a), eb = enclosed_triangle<FT>(b);
+  const EnclosedVector& v = ea[std::size_t(ia)];
+  const EnclosedVector* a_far[2] = {&ea[std::size_t((ia + 1) % 3)], &ea[std::size_t((ia + 2) % 3)]};
+  const EnclosedVector* b_far[2] = {&eb[std::size_t((ib + 1) % 3)], &eb[std::size_t((ib + 2) % 3)]};
+  const EnclosedVector na = cross_of(minus(*a_far[0], v), minus(*a_far[1], v));
+  const EnclosedVector nb = cross_of(minus(*b_far[0], v), minus(*b_far[1], v));
+  if (certainly_splits(na, v, {}, {b_far[0], b_far[1]}) ||
+      certainly_splits(nb, v, {}, {a_far[0], a_far[1]}))
+    return true;
+  for (int k = 0; k < 2; ++k) {
+    if (certainly_splits(cross_of(minus(*a_far[k], v), na), v, {a_far[1 - k]},
+                         {b_far[0], b_far[1]}) ||
+        certainly_splits(cross_of(minus(*b_far[k], v), nb), v, {b_far[1 - k]},
+                         {a_far[0], a_far[1]}))
+      return true;
+    for (int l = 0; l < 2; ++l)
+      if (certainly_splits(cross_of(minus(*a_far[k], v), minus(*b_far[l], v)), v, {a_far[1 - k]},
+                           {b_far[1 - l]}))
+        return true;
+  }
+  return false;
+}
+
 template <class FT>
 SharedCorners shared_corners(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
   SharedCorners out;
@@ -167,6 +269,7 @@ std::optional<Point<FT, 3>> shared_vertex_meet(const PointVec<FT, 3>& a, const P
   if (shared.count != 1) return std::nullopt;
   const int ia = shared.in_b[0] >= 0 ? 0 : shared.in_b[1] >= 0 ? 1 : 2;
   const int ib = shared.in_b[std::size_t(ia)];
+  if (certainly_meet_only_at<FT>(a, b, ia, ib)) return a[std::size_t(ia)];
   const auto cg = [](const Point<FT, 3>& p) { return P(p[0], p[1], p[2]); };
   const P v = cg(a[std::size_t(ia)]);
   const P a1 = cg(a[std::size_t((ia + 1) % 3)]), a2 = cg(a[std::size_t((ia + 2) % 3)]);
@@ -226,6 +329,7 @@ void add_intersection(const PointVec<FT, D>& a, const PointVec<FT, D>& b,
       q[2] = p.z();
       return q;
     };
+    if (certainly_apart<FT>(a, b)) return;
     const auto shared = shared_corners<FT>(a, b);
     if (const auto edge = shared_edge_meet<FT>(a, b, shared)) {
       out.push_back({*edge});
