@@ -182,7 +182,7 @@ struct PlaneFrame {
 };
 
 template <class FT>
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
+using Cdt = CGAL::Constrained_triangulation_2<
     KernelOf<FT>,
     CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<KernelOf<FT>>,
                                          CGAL::Constrained_triangulation_face_base_2<KernelOf<FT>>>,
@@ -298,10 +298,15 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
       const auto& tri = tris[t];
       const typename K::Triangle_3 t3(cg(tri[0]), cg(tri[1]), cg(tri[2]));
       const auto tb = box_of<FT, 3>(tri);
+      // The interval filter of the interface pieces first: a cut that it proves apart from the
+      // triangle is, and the exact tests (an exactly-zero orientation over K_m for a cut in the
+      // triangle's plane) are left for the others.
       for (const auto& p : cuts.points)
-        if (box_contains<FT, 3>(tb, p) && point_in_simplex<FT, 3>(tri, p)) insert(p);
+        if (box_contains<FT, 3>(tb, p) && !certainly_apart<FT>(tri, {p, p, p}) &&
+            point_in_simplex<FT, 3>(tri, p))
+          insert(p);
       for (const auto& [a, b] : cuts.segments) {
-        if (!tb.overlaps(box_of<FT, 3>({a, b}))) continue;
+        if (!tb.overlaps(box_of<FT, 3>({a, b})) || certainly_apart<FT>(tri, {a, b, b})) continue;
         const auto corner = corner_cut<FT>(tri, a, b);
         if (corner == CornerCut::edge) cdt.insert_constraint(insert(a), insert(b));
         if (corner != CornerCut::undecided) continue; // a corner only: already a vertex

@@ -174,7 +174,8 @@ inline bool certainly_splits(const EnclosedVector& m, const EnclosedVector& o,
 /// Whether the enclosures prove two triangles disjoint: some plane has one triangle on its closed
 /// side and every corner of the other strictly beyond it — the plane of either triangle, or the
 /// plane through an edge of one that is orthogonal to its triangle (for coplanar triangles, a
-/// separating line of their plane).
+/// separating line of their plane). A segment or a point may be given as a degenerate triangle
+/// (a repeated corner): its own planes then prove nothing, the other's still do.
 template <class FT>
 bool certainly_apart(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
   const auto one_way = [](const std::array<EnclosedVector, 3>& t,
