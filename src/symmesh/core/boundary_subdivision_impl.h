@@ -181,8 +181,10 @@ struct PlaneFrame {
   }
 };
 
+/// A flat region's triangulation: only its faces between constraints are used, so it need not be
+/// Delaunay (the Delaunay one's flips were in-circle tests of cocircular corners, exact over K_m).
 template <class FT>
-using Cdt = CGAL::Constrained_triangulation_2<
+using RegionTriangulation = CGAL::Constrained_triangulation_2<
     KernelOf<FT>,
     CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<KernelOf<FT>>,
                                          CGAL::Constrained_triangulation_face_base_2<KernelOf<FT>>>,
@@ -260,12 +262,12 @@ BoundarySubdivision<FT, 3> build_subdivision_3d(const std::vector<PointVec<FT, 3
     q[2] = p.z();
     return q;
   };
-  using VertexHandle = typename Cdt<FT>::Vertex_handle;
-  using FaceHandle = typename Cdt<FT>::Face_handle;
+  using VertexHandle = typename RegionTriangulation<FT>::Vertex_handle;
+  using FaceHandle = typename RegionTriangulation<FT>::Face_handle;
   // One constrained triangulation per flat region, in the region's plane: its outline (edges
   // in one of its triangles) and the cuts are constraints, the carrier's inner edges are not.
   const auto regions = flat_regions<FT>(tris);
-  std::vector<Cdt<FT>> cdts(regions.size());
+  std::vector<RegionTriangulation<FT>> cdts(regions.size());
   // Each vertex's point on the boundary: the 3D point it was inserted as, or — for a crossing of
   // constraints that the triangulation made — the lift of its projection. Lifting every vertex
   // divided by the plane's normal over K_m, and comparing the quotients with the input points

@@ -14,7 +14,7 @@
 #include "symmesh/core/interface_conformity.h"
 #include "symmesh/core/kernel.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_2.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Simple_cartesian.h>
