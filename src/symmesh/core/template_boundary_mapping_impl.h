@@ -15,7 +15,6 @@
 #include "symmesh/core/kernel.h"
 
 #include <CGAL/Constrained_triangulation_2.h>
-#include <CGAL/Interval_nt.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Triangulation_vertex_base_2.h>
@@ -128,38 +127,23 @@ struct SharedCorners {
 // plane: there the exact tests start with an orientation that is exactly zero, which no filter
 // decides, so it was evaluated over K_m (a millisecond per pair at K_128). A filter decides only
 // what its enclosures prove and otherwise leaves the pair to the exact tests, so the pieces
-// found are those of the exact tests alone.
-using Enclosed = CGAL::Interval_nt<true>; // sets the rounding mode itself: values are certified
-using EnclosedVector = std::array<Enclosed, 3>;
-
-template <class FT>
-std::array<EnclosedVector, 3> enclosed_triangle(const PointVec<FT, 3>& t) {
-  std::array<EnclosedVector, 3> out;
-  for (std::size_t k = 0; k < 3; ++k)
-    for (std::size_t d = 0; d < 3; ++d) out[k][d] = Enclosed(CGAL::to_interval(t[k][d]));
-  return out;
-}
-
-inline EnclosedVector minus(const EnclosedVector& u, const EnclosedVector& v) {
-  return {u[0] - v[0], u[1] - v[1], u[2] - v[2]};
-}
-
-inline EnclosedVector cross_of(const EnclosedVector& u, const EnclosedVector& v) {
-  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
+// found are those of the exact tests alone. The enclosures are element_complex.h's
+// (`detail::Enclosure`, `enclosures`), with Point's arithmetic.
+using detail::Enclosure;
+using detail::enclosures;
+using EnclosedPoint = Point<Enclosure, 3>;
 
 /// The sign of m · (q − o) when the enclosures prove it, else 0.
-inline int certain_side(const EnclosedVector& m, const EnclosedVector& o, const EnclosedVector& q) {
-  const EnclosedVector d = minus(q, o);
-  const Enclosed s = m[0] * d[0] + m[1] * d[1] + m[2] * d[2];
+inline int certain_side(const EnclosedPoint& m, const EnclosedPoint& o, const EnclosedPoint& q) {
+  const Enclosure s = dot<Enclosure, 3>(m, q - o);
   return s.inf() > 0 ? 1 : (s.sup() < 0 ? -1 : 0);
 }
 
 /// Whether the points `far` lie certainly strictly on one side of the plane through o with normal
-/// m and the points `near` certainly strictly on the other (the sides' signs, or 0).
-inline bool certainly_splits(const EnclosedVector& m, const EnclosedVector& o,
-                             std::initializer_list<const EnclosedVector*> near,
-                             std::initializer_list<const EnclosedVector*> far) {
+/// m and the points `near` certainly strictly on the other.
+inline bool certainly_splits(const EnclosedPoint& m, const EnclosedPoint& o,
+                             std::initializer_list<const EnclosedPoint*> near,
+                             std::initializer_list<const EnclosedPoint*> far) {
   int side = 0;
   for (const auto* q : far) {
     const int s = certain_side(m, o, *q);
@@ -178,17 +162,17 @@ inline bool certainly_splits(const EnclosedVector& m, const EnclosedVector& o,
 /// (a repeated corner): its own planes then prove nothing, the other's still do.
 template <class FT>
 bool certainly_apart(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
-  const auto one_way = [](const std::array<EnclosedVector, 3>& t,
-                          const std::array<EnclosedVector, 3>& u) {
-    const EnclosedVector n = cross_of(minus(t[1], t[0]), minus(t[2], t[0]));
+  const auto one_way = [](const std::vector<EnclosedPoint>& t,
+                          const std::vector<EnclosedPoint>& u) {
+    const EnclosedPoint n = cross<Enclosure>(t[1] - t[0], t[2] - t[0]);
     if (certainly_splits(n, t[0], {}, {&u[0], &u[1], &u[2]})) return true;
     for (std::size_t i = 0; i < 3; ++i) {
-      const EnclosedVector m = cross_of(minus(t[(i + 1) % 3], t[i]), n);
+      const EnclosedPoint m = cross<Enclosure>(t[(i + 1) % 3] - t[i], n);
       if (certainly_splits(m, t[i], {&t[(i + 2) % 3]}, {&u[0], &u[1], &u[2]})) return true;
     }
     return false;
   };
-  const auto ea = enclosed_triangle<FT>(a), eb = enclosed_triangle<FT>(b);
+  const auto ea = enclosures<FT, 3>(a), eb = enclosures<FT, 3>(b);
   return one_way(ea, eb) || one_way(eb, ea);
 }
 
@@ -200,23 +184,23 @@ bool certainly_apart(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b) {
 /// only in v, being not parallel; the other two corners strictly on opposite sides).
 template <class FT>
 bool certainly_meet_only_at(const PointVec<FT, 3>& a, const PointVec<FT, 3>& b, int ia, int ib) {
-  const auto ea = enclosed_triangle<FT>(a), eb = enclosed_triangle<FT>(b);
-  const EnclosedVector& v = ea[std::size_t(ia)];
-  const EnclosedVector* a_far[2] = {&ea[std::size_t((ia + 1) % 3)], &ea[std::size_t((ia + 2) % 3)]};
-  const EnclosedVector* b_far[2] = {&eb[std::size_t((ib + 1) % 3)], &eb[std::size_t((ib + 2) % 3)]};
-  const EnclosedVector na = cross_of(minus(*a_far[0], v), minus(*a_far[1], v));
-  const EnclosedVector nb = cross_of(minus(*b_far[0], v), minus(*b_far[1], v));
+  const auto ea = enclosures<FT, 3>(a), eb = enclosures<FT, 3>(b);
+  const EnclosedPoint& v = ea[std::size_t(ia)];
+  const EnclosedPoint* a_far[2] = {&ea[std::size_t((ia + 1) % 3)], &ea[std::size_t((ia + 2) % 3)]};
+  const EnclosedPoint* b_far[2] = {&eb[std::size_t((ib + 1) % 3)], &eb[std::size_t((ib + 2) % 3)]};
+  const EnclosedPoint na = cross<Enclosure>(*a_far[0] - v, *a_far[1] - v);
+  const EnclosedPoint nb = cross<Enclosure>(*b_far[0] - v, *b_far[1] - v);
   if (certainly_splits(na, v, {}, {b_far[0], b_far[1]}) ||
       certainly_splits(nb, v, {}, {a_far[0], a_far[1]}))
     return true;
   for (int k = 0; k < 2; ++k) {
-    if (certainly_splits(cross_of(minus(*a_far[k], v), na), v, {a_far[1 - k]},
+    if (certainly_splits(cross<Enclosure>(*a_far[k] - v, na), v, {a_far[1 - k]},
                          {b_far[0], b_far[1]}) ||
-        certainly_splits(cross_of(minus(*b_far[k], v), nb), v, {b_far[1 - k]},
+        certainly_splits(cross<Enclosure>(*b_far[k] - v, nb), v, {b_far[1 - k]},
                          {a_far[0], a_far[1]}))
       return true;
     for (int l = 0; l < 2; ++l)
-      if (certainly_splits(cross_of(minus(*a_far[k], v), minus(*b_far[l], v)), v, {a_far[1 - k]},
+      if (certainly_splits(cross<Enclosure>(*a_far[k] - v, *b_far[l] - v), v, {a_far[1 - k]},
                            {b_far[1 - l]}))
         return true;
   }

@@ -174,10 +174,6 @@ void shared_vertex_bookkeeping(const core::TemplatedStructure<FT, D>& x,
   }
 }
 
-/// The SVB candidates of the copies of one template (Algorithms 6.1/6.4/6.5): vertex p of copy k
-/// is vertex q of copy l when T_{i,l}^-1 ∘ T_{i,k} sends p to q (exact, over the template's exact
-/// boundary points `boundary_points[i]`, in local vertex ids). On a mirror the relative map is
-/// the reflection that fixes the mirror pointwise (Lemma 6.1).
 /// A template's boundary points, found by exact equality among the few whose certified interval
 /// boxes meet the query's: a grid over the boxes' midpoints (cells of 2^-20 of the points' extent)
 /// prunes, the exact comparison decides. Equal exact values have intersecting intervals, so it
@@ -277,6 +273,10 @@ private:
   mutable std::map<core::Point<FT, D>, std::size_t, core::PointLess<FT, D>> exact_;
 };
 
+/// The SVB candidates of the copies of one template (Algorithms 6.1/6.4/6.5): vertex p of copy k
+/// is vertex q of copy l when T_{i,l}^-1 ∘ T_{i,k} sends p to q (exact, over the template's exact
+/// boundary points `boundary_points[i]`, in local vertex ids). On a mirror the relative map is
+/// the reflection that fixes the mirror pointwise (Lemma 6.1).
 template <class FT, int D>
 void copy_candidates(const core::TemplatedStructure<FT, D>& x,
                      const std::vector<std::vector<core::Point<FT, D>>>& boundary_points,
