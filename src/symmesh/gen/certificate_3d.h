@@ -255,14 +255,17 @@ core::Lemma42Verdict certify_copies(const core::TemplatedStructure<FT, 3>& x,
                                     const std::vector<SurfaceBoundary<FT>>& boundaries) {
   auto v = certify_by_mappings(bpp, boundaries);
   if (!v.holds) return v;
-  for (const auto& m : core::template_boundary_mappings(x, false)) {
+  // The interfaces of copy 0 are those with the copies near it (the group moves the rest there).
+  const auto near = support::copies_near_copy_zero(x);
+  const auto& y = near.structure;
+  for (const auto& m : core::template_boundary_mappings(y, false)) {
     if (m.whole_boundary || m.from.g != 0 || m.to.g == 0) continue;
     ++v.pairs_checked;
-    const auto& from = x.tf(m.from);
+    const auto& from = y.tf(m.from);
     for (const auto& piece : m.domain)
       for (const auto& p : piece.vertices) {
         const auto w = from(p);
-        if (copies[m.to.g](w) != w) return certify_3(x, boundaries);
+        if (copies[near.near[m.to.g]](w) != w) return certify_3(x, boundaries);
       }
   }
   return v;

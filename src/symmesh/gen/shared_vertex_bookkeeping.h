@@ -12,6 +12,7 @@
 #include "symmesh/core/boundary_patch_partition.h"
 #include "symmesh/core/templated_structure.h"
 #include "symmesh/gen/generation_support.h"
+#include "symmesh/gen/symmetry_copies.h"
 #include "symmesh/mesh/templated_mesh.h"
 #include "symmesh/mesh/union_find.h"
 
@@ -273,50 +274,145 @@ private:
   mutable std::map<core::Point<FT, D>, std::size_t, core::PointLess<FT, D>> exact_;
 };
 
+/// Boundary points first .. first+count-1 of a template that are affine combinations of
+/// `spanning` (the interior points of a planar face, p0 + s u + t v): a map that fixes the
+/// spanning points fixes all of them, decided by |spanning| exact tests instead of count.
+template <class FT, int D>
+struct AffinePointRange {
+  std::size_t first = 0, count = 0;
+  std::vector<core::Point<FT, D>> spanning;
+};
+
 /// The SVB candidates of the copies of one template (Algorithms 6.1/6.4/6.5): vertex p of copy k
 /// is vertex q of copy l when T_{i,l}^-1 ∘ T_{i,k} sends p to q (exact, over the template's exact
 /// boundary points `boundary_points[i]`, in local vertex ids). On a mirror the relative map is
 /// the reflection that fixes the mirror pointwise (Lemma 6.1).
+/// The copies S_k = T_{0,k} ∘ T_{0,0}^-1 form a group (symmetry_copies checked it), so
+/// T_{i,l}^-1 ∘ T_{i,k} = T_{i,0}^-1 ∘ S_g ∘ T_{i,0} with S_g = S_l^-1 ∘ S_k: the pairs of each
+/// group element g are found once (O(n) maps, not the n^2 pairs of copies; a map whose image of
+/// the template's box misses the box finds none), then every pair (k, l) with S_k = S_l ∘ S_g
+/// gets them — in the order of the pairs k < l, as the pairwise search gave them.
+/// \pre T_{i,k} = S_k ∘ T_{i,0} for every template i, {S_k} closed under composition
+/// `ranges[i]` (optional): template i's boundary points known to be affine combinations.
 template <class FT, int D>
 void copy_candidates(const core::TemplatedStructure<FT, D>& x,
                      const std::vector<std::vector<core::Point<FT, D>>>& boundary_points,
-                     std::vector<SvbCandidate>& out) {
+                     std::vector<SvbCandidate>& out,
+                     const std::vector<std::vector<AffinePointRange<FT, D>>>& ranges = {}) {
+  if (x.instances.empty()) return;
+  const std::size_t n = x.instances[0].size();
+  std::vector<core::RigidTransformation<FT, D>> copies;
+  const auto s0_inv = x.instances[0][0].transformation.inverse();
+  for (const auto& inst : x.instances[0]) copies.push_back(inst.transformation * s0_inv);
+  using I = CGAL::Interval_nt<false>;
   for (std::size_t i = 0; i < x.templates.size(); ++i) {
     const auto& pts = boundary_points[i];
+    if (pts.empty()) continue;
     const BoundaryPointLocator<FT, D> local(pts);
-    const auto& list = x.instances[i];
-    using I = CGAL::Interval_nt<false>;
-    for (std::size_t k = 0; k < list.size(); ++k)
-      for (std::size_t l = k + 1; l < list.size(); ++l) {
-        const auto m = list[l].transformation.inverse() * list[k].transformation;
-        // m's entries as intervals: the image box of each point costs a few interval operations,
-        // and the exact image is built only for the points whose box meets a stored one.
-        std::array<std::array<I, D + 1>, D> mi;
-        for (int r = 0; r < D; ++r) {
-          for (int c = 0; c < D; ++c)
-            mi[std::size_t(r)][std::size_t(c)] = I(CGAL::to_interval(m.matrix()[r][c]));
-          mi[std::size_t(r)][std::size_t(D)] = I(CGAL::to_interval(m.translation_part()[r]));
-        }
-        std::vector<typename BoundaryPointLocator<FT, D>::Box> image(pts.size());
-        {
-          // Upward rounding for the unprotected intervals, only around these interval operations
-          // (the exact comparisons below expect the default rounding).
-          CGAL::Protect_FPU_rounding<true> upward;
-          for (std::size_t v = 0; v < pts.size(); ++v)
-            for (int r = 0; r < D; ++r) {
-              I s = mi[std::size_t(r)][std::size_t(D)];
-              for (int c = 0; c < D; ++c)
-                s += mi[std::size_t(r)][std::size_t(c)] * I(local.box(v)[std::size_t(c)]);
-              image[v][std::size_t(r)] = {s.inf(), s.sup()};
-            }
-        }
-        SvbPairs pairs;
-        for (std::size_t v = 0; v < pts.size(); ++v)
-          if (const auto w = local.find(image[v], [&] { return m(pts[v]); }))
-            pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(*w));
-        if (!pairs.empty())
-          out.push_back({{i, k}, {i, l}, std::make_shared<const SvbPairs>(std::move(pairs))});
+    const auto& t0 = x.instances[i][0].transformation;
+    const auto t0_inv = t0.inverse();
+    std::array<std::pair<double, double>, D> whole{};
+    for (int d = 0; d < D; ++d) whole[std::size_t(d)] = local.box(0)[std::size_t(d)];
+    for (std::size_t v = 1; v < pts.size(); ++v)
+      for (int d = 0; d < D; ++d) {
+        auto& w = whole[std::size_t(d)];
+        w.first = std::min(w.first, local.box(v)[std::size_t(d)].first);
+        w.second = std::max(w.second, local.box(v)[std::size_t(d)].second);
       }
+    // pairs_of[g]: the pairs (v, w) with T_{i,0}^-1 S_g T_{i,0} (p_v) = p_w.
+    std::vector<std::shared_ptr<const SvbPairs>> pairs_of(n);
+    for (std::size_t g = 1; g < n; ++g) {
+      const auto m = t0_inv * copies[g] * t0;
+      // m's entries as intervals: the image box of each point costs a few interval operations,
+      // and the exact image is built only for the points whose box meets a stored one.
+      std::array<std::array<I, D + 1>, D> mi;
+      for (int r = 0; r < D; ++r) {
+        for (int c = 0; c < D; ++c)
+          mi[std::size_t(r)][std::size_t(c)] = I(CGAL::to_interval(m.matrix()[r][c]));
+        mi[std::size_t(r)][std::size_t(D)] = I(CGAL::to_interval(m.translation_part()[r]));
+      }
+      std::vector<typename BoundaryPointLocator<FT, D>::Box> image(pts.size());
+      bool may_meet = true;
+      {
+        // Upward rounding for the unprotected intervals, only around these interval operations
+        // (the exact comparisons below expect the default rounding).
+        CGAL::Protect_FPU_rounding<true> upward;
+        const auto image_of = [&](const auto& box, auto& into) {
+          for (int r = 0; r < D; ++r) {
+            I s = mi[std::size_t(r)][std::size_t(D)];
+            for (int c = 0; c < D; ++c)
+              s += mi[std::size_t(r)][std::size_t(c)] * I(box[std::size_t(c)]);
+            into[std::size_t(r)] = {s.inf(), s.sup()};
+          }
+        };
+        typename BoundaryPointLocator<FT, D>::Box hull;
+        image_of(whole, hull);
+        for (int d = 0; d < D; ++d)
+          may_meet = may_meet && !(hull[std::size_t(d)].second < whole[std::size_t(d)].first ||
+                                   whole[std::size_t(d)].second < hull[std::size_t(d)].first);
+        if (may_meet)
+          for (std::size_t v = 0; v < pts.size(); ++v) image_of(local.box(v), image[v]);
+      }
+      if (!may_meet) continue;
+      // A reflection fixes exactly its mirror plane, one linear equation (a nonzero row of
+      // m - I): a point whose image box meets its own box is tested on it — 3 exact products
+      // instead of the image's 9 (the mirror faces' points, nearly all the pairs here).
+      // (A reflection: orientation-reversing, an involution, trace D - 2 — not the point
+      // inversion of 3D, trace -3, which fixes one point only.)
+      std::optional<int> mirror_row;
+      FT trace(0);
+      for (int d = 0; d < D; ++d) trace += m.matrix()[d][d];
+      if (CGAL::sign(m.determinant_of_linear_part()) < 0 && trace == FT(D - 2) &&
+          (m * m).is_identity())
+        for (int r = 0; r < D && !mirror_row; ++r)
+          for (int c = 0; c < D && !mirror_row; ++c)
+            if (m.matrix()[r][c] != FT(r == c ? 1 : 0)) mirror_row = r;
+      const auto on_mirror = [&](const core::Point<FT, D>& p) {
+        const int r = *mirror_row;
+        FT e = m.translation_part()[r] - p[r];
+        for (int c = 0; c < D; ++c) e += m.matrix()[r][c] * p[c];
+        return CGAL::is_zero(e);
+      };
+      const auto meets_own = [&](std::size_t v) {
+        for (int d = 0; d < D; ++d)
+          if (image[v][std::size_t(d)].second < local.box(v)[std::size_t(d)].first ||
+              local.box(v)[std::size_t(d)].second < image[v][std::size_t(d)].first)
+            return false;
+        return true;
+      };
+      std::vector<bool> fixed(pts.size(), false); // in a range whose spanning points m fixes
+      if (mirror_row && i < ranges.size())
+        for (const auto& range : ranges[i]) {
+          bool all = true;
+          for (const auto& q : range.spanning) all = all && on_mirror(q);
+          if (all)
+            for (std::size_t v = range.first; v < range.first + range.count; ++v) fixed[v] = true;
+        }
+      SvbPairs pairs;
+      for (std::size_t v = 0; v < pts.size(); ++v) {
+        // (p_v is not evaluated exactly here. An exact evaluation narrows a lazy interval, and
+        // rounded() takes a narrow interval's midpoint, so the written doubles of such points may
+        // differ by an ulp from those of the pointwise test this replaces; deterministic still.)
+        if (fixed[v] || (mirror_row && meets_own(v) && on_mirror(pts[v]))) {
+          pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(v));
+          continue;
+        }
+        if (const auto w = local.find(image[v], [&] { return m(pts[v]); }))
+          pairs.emplace_back(mesh::IndexType(v), mesh::IndexType(*w));
+      }
+      if (!pairs.empty()) pairs_of[g] = std::make_shared<const SvbPairs>(std::move(pairs));
+    }
+    std::vector<std::tuple<std::size_t, std::size_t, std::size_t>> found; // (k, l, g)
+    for (std::size_t g = 1; g < n; ++g) {
+      if (!pairs_of[g]) continue;
+      for (std::size_t l = 0; l < n; ++l) {
+        const auto k = copy_index(copies, copies[l] * copies[g], true);
+        if (!k) throw std::logic_error("SVB: the copies are not closed under composition");
+        if (*k < l) found.emplace_back(*k, l, g);
+      }
+    }
+    std::sort(found.begin(), found.end());
+    for (const auto& [k, l, g] : found) out.push_back({{i, k}, {i, l}, pairs_of[g]});
   }
 }
 

@@ -2,10 +2,14 @@
 /// 6.4, 6.5), in 2D and 3D: S_k = T_{1,k} ∘ T_{1,1}^-1, the same for every template, closed
 /// under composition, with a reflection — spec/generation.md#reflective. Internal to gen/.
 #pragma once
+#include "symmesh/core/interface_conformity.h"
 #include "symmesh/core/rigid_transformation.h"
 #include "symmesh/core/templated_structure.h"
 
+#include <CGAL/number_utils.h>
+
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +18,75 @@ namespace symmesh::gen::support {
 
 /// How generate() uses the symmetry of the structure (spec/generation.md).
 enum class Symmetry { none, rotational, reflective, combined };
+
+/// The index of the copy equal to t, exactly: the certified interval boxes of the entries pick
+/// the candidates (equal values have meeting intervals), an exact comparison decides among them.
+/// With `closed` (the copies are known to be closed under composition and t is a product of
+/// copies), a single candidate is the copy: t's exact value lies in its own box and in the box of
+/// the copy it equals, so that copy is a candidate; no exact comparison is needed then.
+template <class FT, int D>
+std::optional<std::size_t> copy_index(const std::vector<core::RigidTransformation<FT, D>>& copies,
+                                      const core::RigidTransformation<FT, D>& t,
+                                      bool closed = false) {
+  const auto meet = [](const FT& a, const FT& b) {
+    const auto [al, ah] = CGAL::to_interval(a);
+    const auto [bl, bh] = CGAL::to_interval(b);
+    return !(ah < bl || bh < al);
+  };
+  std::vector<std::size_t> candidates;
+  for (std::size_t k = 0; k < copies.size(); ++k) {
+    bool candidate = true;
+    for (int r = 0; r < D && candidate; ++r) {
+      candidate = meet(copies[k].translation_part()[r], t.translation_part()[r]);
+      for (int c = 0; c < D && candidate; ++c)
+        candidate = meet(copies[k].matrix()[r][c], t.matrix()[r][c]);
+    }
+    if (candidate) candidates.push_back(k);
+  }
+  if (closed && candidates.size() == 1) return candidates[0];
+  for (std::size_t k : candidates)
+    if (copies[k] == t) return k;
+  return std::nullopt;
+}
+
+namespace detail {
+/// Whether the copies are exactly the dihedral group {r^j, r^j ∘ m : j < n/2} of a rotation r of
+/// order n/2 >= 3 and a reflection m with (m ∘ r)^2 = I: then they are closed under composition,
+/// decided with O(n) exact products instead of the n^2 of the general check. r is the rotation
+/// of smallest angle (largest trace, by intervals); every copy must be matched exactly once.
+template <class FT, int D>
+bool dihedral(const std::vector<core::RigidTransformation<FT, D>>& copies) {
+  const std::size_t n = copies.size();
+  if (n < 6 || n % 2 != 0) return false;
+  std::optional<std::size_t> r, m;
+  double best = -1e300;
+  for (std::size_t k = 1; k < n; ++k) {
+    if (CGAL::sign(copies[k].determinant_of_linear_part()) < 0) {
+      if (!m) m = k;
+      continue;
+    }
+    double trace = 0;
+    for (int d = 0; d < D; ++d) trace += CGAL::to_double(copies[k].matrix()[d][d]);
+    if (trace > best) best = trace, r = k;
+  }
+  if (!r || !m) return false;
+  const auto& rot = copies[*r];
+  const auto& refl = copies[*m];
+  const core::RigidTransformation<FT, D> id;
+  if (!(refl * refl == id) || !(refl * rot * refl * rot == id)) return false;
+  std::vector<bool> seen(n, false);
+  core::RigidTransformation<FT, D> power = id;
+  for (std::size_t j = 0; j < n / 2; ++j) {
+    for (const auto& t : {power, power * refl}) {
+      const auto k = copy_index(copies, t);
+      if (!k || seen[*k]) return false;
+      seen[*k] = true;
+    }
+    power = rot * power;
+  }
+  return power == id;
+}
+} // namespace detail
 
 /// Algorithms 6.1/6.4 (reflective) and 6.5 (combined), on templated input: the copies
 /// S_k = T_{1,k} ∘ T_{1,1}^-1 must be the same for every template (T_{i,k} = S_k ∘ T_{i,0}) and
@@ -41,8 +114,14 @@ symmetry_copies(const core::TemplatedStructure<FT, D>& x, Symmetry kind) {
     if (x.instances[i].size() != n)
       fail("template " + std::to_string(i + 1) + " has " + std::to_string(x.instances[i].size()) +
            " instances, template 1 has " + std::to_string(n));
+    // A template placed as template 1 (T_{i,0} = T_{1,0}, e.g. both the identity) needs no
+    // product: T_{i,k} = S_k ∘ T_{1,0} = T_{1,k}.
+    const bool placed_as_first =
+        x.instances[i][0].transformation == x.instances[0][0].transformation;
     for (std::size_t k = 1; k < n; ++k)
-      if (!(x.instances[i][k].transformation == copies[k] * x.instances[i][0].transformation))
+      if (!(placed_as_first
+                ? x.instances[i][k].transformation == x.instances[0][k].transformation
+                : x.instances[i][k].transformation == copies[k] * x.instances[i][0].transformation))
         fail("T_{" + std::to_string(i + 1) + "," + std::to_string(k + 1) + "} is not S_" +
              std::to_string(k + 1) + " ∘ T_{" + std::to_string(i + 1) + ",1}");
   }
@@ -51,6 +130,8 @@ symmetry_copies(const core::TemplatedStructure<FT, D>& x, Symmetry kind) {
       if (copies[k] == t) return k;
     return n;
   };
+  // A large dihedral group (the 2n half-slices of an n-fold object) is recognised in O(n).
+  if (kind == Symmetry::combined && n > 16 && detail::dihedral(copies)) return copies;
   bool reflection = false, long_rotation = false;
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = 0; b < n; ++b)
@@ -68,6 +149,49 @@ symmetry_copies(const core::TemplatedStructure<FT, D>& x, Symmetry kind) {
   if (!reflection) fail("no copy is a reflection");
   if (kind == Symmetry::combined && !long_rotation) fail("no copy is a rotation of order >= 3");
   return copies;
+}
+
+/// Copy 0 of every template with the copies whose carrier cells may meet it: `near[t]` is the copy
+/// index of instance t of every template of `structure` (near[0] = 0). With a group of copies,
+/// whatever involves two copies (k, l) is the image under S_l of what involves (copy of S_l^-1
+/// S_k, copy 0), so the instance overlaps (Eq. 4.2) and the interfaces of the whole structure
+/// are those of this one, moved by the group. Certified interval boxes of the carriers' cells
+/// decide which copies are near; the exact work then grows with the copies that are.
+template <class FT, int D>
+struct CopiesNearCopyZero {
+  core::TemplatedStructure<FT, D> structure;
+  std::vector<std::size_t> near;
+};
+
+template <class FT, int D>
+CopiesNearCopyZero<FT, D> copies_near_copy_zero(const core::TemplatedStructure<FT, D>& x) {
+  const auto cell_boxes = [&](std::size_t k) {
+    std::vector<core::EnclosingBox<FT, D>> out;
+    for (std::size_t i = 0; i < x.templates.size(); ++i) {
+      const auto& c = x.templates[i].mesh;
+      std::vector<core::Point<FT, D>> pts;
+      for (const auto& p : c.points) pts.push_back(x.instances[i][k].transformation(p));
+      for (const auto& e : c.elements)
+        if (e.dim() == D) out.push_back(core::EnclosingBox<FT, D>::of(pts, e));
+    }
+    return out;
+  };
+  CopiesNearCopyZero<FT, D> out;
+  out.near.push_back(0);
+  const auto first = cell_boxes(0);
+  const std::size_t n = x.instances.empty() ? 0 : x.instances[0].size();
+  for (std::size_t k = 1; k < n; ++k) {
+    bool meet = false;
+    for (const auto& b : cell_boxes(k))
+      for (const auto& a : first) meet = meet || a.overlaps(b);
+    if (meet) out.near.push_back(k);
+  }
+  out.structure.templates = x.templates;
+  for (const auto& list : x.instances) {
+    out.structure.instances.emplace_back();
+    for (std::size_t k : out.near) out.structure.instances.back().push_back(list[k]);
+  }
+  return out;
 }
 
 } // namespace symmesh::gen::support

@@ -297,9 +297,12 @@ enum class Whole { no, tetgen, gmsh };
 /// `rotational`: Section 6.3 with Algorithm 6.2 in 3D (spec/generation.md#rotational-3d).
 /// `whole`: the baselines (#conventional-3d, #gmsh-3d): the same boundary meshes, then one
 /// mesher call on the whole geometry instead of one per template.
+/// `known_copies`: the copies of a group symmetry when the caller has them already (exact, from
+/// support::symmetry_copies), else they are computed here.
 template <class FT>
 GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o,
-                            Symmetry symmetry = Symmetry::none, Whole whole = Whole::no) {
+                            Symmetry symmetry = Symmetry::none, Whole whole = Whole::no,
+                            std::vector<core::RigidTransformation<FT, 3>> known_copies = {}) {
   const bool rotational = symmetry == Symmetry::rotational;
   const bool group = symmetry == Symmetry::reflective || symmetry == Symmetry::combined;
   support::input_stage(x, o, "Algorithm 5.7");
@@ -333,14 +336,18 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
     // Algorithms 6.1/6.4/6.5 in 3D: copy 0 of every template is the positive part; its BPP makes
     // the interfaces inside it conform, and the mirror planes need nothing (Lemma 6.1: each
     // reflection fixes its mirror pointwise, so any surface mesh of a mirror face conforms).
-    copies = support::symmetry_copies(x, symmetry).size();
+    if (known_copies.empty()) known_copies = support::symmetry_copies(x, symmetry);
+    copies = known_copies.size();
     two_copies.templates = x.templates;
     for (const auto& list : x.instances) two_copies.instances.push_back({list[0]});
   }
   const double symmetry_seconds = seconds_since(t0);
   const long symmetry_faults = minor_faults() - f0;
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice))
+  // A group of copies: every overlap is the image of one with copy 0 (copies_near_copy_zero).
+  if (const auto overlap =
+          group ? core::find_instance_overlap(support::copies_near_copy_zero(x).structure)
+                : core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice))
     throw std::invalid_argument(core::overlap_message(*overlap));
   const auto bpp = support::boundary_patch_stage(rotational || group ? two_copies : x, o,
                                                  symmetry_seconds, symmetry_faults, r);
@@ -372,8 +379,18 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
   if (group) {
     std::vector<std::vector<P3<FT>>> points;
-    for (const auto& b : boundaries) points.push_back(b.exact);
-    support::copy_candidates<FT, 3>(x, points, candidates);
+    std::vector<std::vector<support::AffinePointRange<FT, 3>>> ranges;
+    for (const auto& b : boundaries) {
+      points.push_back(b.exact);
+      ranges.emplace_back();
+      for (std::size_t f = 0; f < b.facet_plane.size(); ++f)
+        if (b.facet_plane[f] && b.facet_count[f] > 0) {
+          const auto& pl = *b.facet_plane[f];
+          ranges.back().push_back(
+              {b.facet_first[f], b.facet_count[f], {pl.p0, pl.p0 + pl.u, pl.p0 + pl.v}});
+        }
+    }
+    support::copy_candidates<FT, 3>(x, points, candidates, ranges);
   }
   support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
                                             r.templated);
@@ -393,7 +410,7 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
 
   support::certificate_stage(o, r, [&] {
     if (o.direct_certificate) return certify_3(x, boundaries);
-    if (group) return certify_copies(x, support::symmetry_copies(x, symmetry), bpp, boundaries);
+    if (group) return certify_copies(x, known_copies, bpp, boundaries);
     return certify_by_mappings(bpp, boundaries);
   });
   return r;
@@ -407,13 +424,27 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     const std::size_t n = support::rotation_order(x, unused);
     return n > 0 && !non_consecutive_contact(x, n);
   };
+  // The copies found by the last is_group that passed, handed on so generate_3 need not redo them.
+  std::vector<core::RigidTransformation<FT, 3>> group_copies;
+  Symmetry group_kind = Symmetry::none;
   const auto is_group = [&](Symmetry kind) {
     try {
-      support::symmetry_copies(x, kind);
+      group_copies = support::symmetry_copies(x, kind);
+      group_kind = kind;
       return true;
     } catch (const std::invalid_argument&) {
       return false;
     }
+  };
+  const auto copies_of = [&](Symmetry kind) {
+    return group_kind == kind ? group_copies : std::vector<core::RigidTransformation<FT, 3>>{};
+  };
+  // The baselines mesh the boundary as the templated method does: rotational or, for a
+  // reflective-rotational structure, combined (the mirrors' faces meshed once, as Alg. 6.5).
+  const auto baseline_symmetry = [&] {
+    return rotational_applies()           ? Symmetry::rotational
+           : is_group(Symmetry::combined) ? Symmetry::combined
+                                          : Symmetry::none;
   };
   if (method == Method::automatic)
     // The most specialised method whose exact checks pass; bpp needs no symmetry.
@@ -433,11 +464,11 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     r.method = "rotational";
     break;
   case Method::reflective:
-    r = generate_3(x, options, Symmetry::reflective);
+    r = generate_3(x, options, Symmetry::reflective, Whole::no, copies_of(Symmetry::reflective));
     r.method = "reflective";
     break;
   case Method::combined:
-    r = generate_3(x, options, Symmetry::combined);
+    r = generate_3(x, options, Symmetry::combined, Whole::no, copies_of(Symmetry::combined));
     r.method = "combined";
     break;
   case Method::merge:
@@ -446,14 +477,18 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     break;
   case Method::conventional:
     // The boundary meshes as the templated method makes them (rotational when it applies).
-    r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none,
-                   Whole::tetgen);
+    {
+      const auto s = baseline_symmetry();
+      r = generate_3(x, options, s, Whole::tetgen, copies_of(s));
+    }
     r.method = "conventional";
     break;
   case Method::gmsh:
     // The peer on the very surfaces the conventional baseline hands TetGen.
-    r = generate_3(x, options, rotational_applies() ? Symmetry::rotational : Symmetry::none,
-                   Whole::gmsh);
+    {
+      const auto s = baseline_symmetry();
+      r = generate_3(x, options, s, Whole::gmsh, copies_of(s));
+    }
     r.method = "gmsh";
     break;
   default:

@@ -239,6 +239,21 @@ J bridge() {
 
 // ------------------------------------------------------------------------------ 3D: open TSV
 
+/// The carrier of a trapezoid prism with bottom vertices 0..3 (0, 1 on one cut face, 2, 3 on the
+/// other; 0, 2 inner, 1, 3 outer) and top vertices 4..7 above them: the two triangle prisms over
+/// (0, 1, 3) and (0, 2, 3), 3 tetrahedra each, every vertical quad split from its lower-index
+/// bottom to its higher-index top vertex.
+J trapezoid_prism_cells() {
+  J cells = J::array();
+  for (const auto& tri : {std::array<int, 3>{0, 1, 3}, std::array<int, 3>{0, 2, 3}}) {
+    const int a = tri[0], b = tri[1], c = tri[2]; // increasing
+    cells.push_back(J::array({a, b, c, c + 4}));
+    cells.push_back(J::array({a, b, b + 4, c + 4}));
+    cells.push_back(J::array({a, a + 4, b + 4, c + 4}));
+  }
+  return cells;
+}
+
 /// The slice of an open through-silicon via (Sections 6.3, 7.3): an n-gon prism of silicon with a
 /// coaxial open via lined by two layers, cut into n slices (the wedge between the half-planes at
 /// angle 0 and 2pi/n through the z axis). Each layer of the slice is one template (its own
@@ -258,13 +273,7 @@ J tsv_slice_template(const std::string& name, const std::string& r_in, const std
   // the union of a region's instances to be a mesh).
   J vertices = J::array({at(r_in, 0, "0"), at(r_out, 0, "0"), at(r_in, 1, "0"), at(r_out, 1, "0"),
                          at(r_in, 0, "2"), at(r_out, 0, "2"), at(r_in, 1, "2"), at(r_out, 1, "2")});
-  J cells = J::array();
-  for (const auto& tri : {std::array<int, 3>{0, 1, 3}, std::array<int, 3>{0, 2, 3}}) {
-    const int a = tri[0], b = tri[1], c = tri[2]; // increasing
-    cells.push_back(J::array({a, b, c, c + 4}));
-    cells.push_back(J::array({a, b, b + 4, c + 4}));
-    cells.push_back(J::array({a, a + 4, b + 4, c + 4}));
-  }
+  const J cells = trapezoid_prism_cells();
   J inst = J::array();
   for (int k = 0; k < n; ++k) {
     const J row0 = J::array({cos_of(k, n), "-" + sin_of(k, n), "0"});
@@ -294,6 +303,57 @@ J tsv(int n) {
                               tsv_slice_template("metal", "1/4", "3/10", n, 2),
                               tsv_slice_template("silicon", "3/10", "1", n, 3)})}};
   return d;
+}
+
+/// The half-slice of the open TSV of tsv(n) (Algorithm 6.5, Section 6.4.2): the TSV is mirror
+/// symmetric in the plane y = 0 and in its rotations by pi/n, so the wedge between angle 0 (n-gon
+/// vertices) and pi/n (midpoints of the n-gon sides) reconstructs it under rot(2pi*k/n) and
+/// rot(2pi*k/n) o refl(y = 0), k = 0..n-1. Each layer is the trapezoid prism between the n-gons of
+/// circumradii r_in and r_out (vertices 0..3 bottom: r_in and r_out at angle 0, then at the side
+/// midpoints; 4..7 the same on top), carried by 6 tetrahedra with tsv_slice_template's diagonals
+/// (lower-index bottom to higher-index top), so neighbouring layers' carriers conform; its two cut
+/// faces lie in mirror planes, which fix them pointwise, so the copies' carriers conform too.
+/// Unlike the slice's two cut faces, which the rotation relates point for point (their meshes are
+/// mirror images, which makes TetGen's input cospherical in sixes), the half-slice's cut faces are
+/// meshed on their own.
+J tsv_half_slice_template(const std::string& name, const std::string& r_in,
+                          const std::string& r_out, int n, int region) {
+  const std::string mx = "(1+" + cos_of(1, n) + ")/2", my = sin_of(1, n) + "/2";
+  const auto vertex = [&](const std::string& r, bool midpoint, const std::string& z) {
+    return midpoint ? J::array({r + "*" + mx, r + "*" + my, z}) : J::array({r, "0", z});
+  };
+  J vertices = J::array();
+  for (const std::string z : {"0", "2"})
+    for (bool midpoint : {false, true})
+      for (const std::string& r : {r_in, r_out}) vertices.push_back(vertex(r, midpoint, z));
+  const J cells = trapezoid_prism_cells();
+  const J mirror{{"reflection", J{{"normal", J::array({"0", "1", "0"})}}}};
+  J inst = J::array();
+  for (int k = 0; k < n; ++k) {
+    const J rot{{"rotation", J{{"order", n}, {"k", k}, {"axis", "z"}}}};
+    inst.push_back(instance(k == 0 ? identity() : rot, region));
+    inst.push_back(instance(k == 0 ? mirror : compose(rot, mirror), region));
+  }
+  return J{{"name", name},
+           {"kind", "geometry"},
+           {"vertices", vertices},
+           {"cells", cells},
+           {"instances", inst}};
+}
+
+J tsv_half(int n) {
+  return J{{"symmesh", "templated-structure/1"},
+           {"dimension", 3},
+           {"description",
+            "The open TSV of tsv-" + std::to_string(n) +
+                " in the form of Algorithm 6.5: three half-slice templates (oxide 1, metal 2, "
+                "silicon 3), the wedge between angle 0 and pi/" +
+                std::to_string(n) + ", each instanced by the " + std::to_string(2 * n) +
+                " copies rot(2pi*k/" + std::to_string(n) + ") and rot(2pi*k/" + std::to_string(n) +
+                ") o refl(y = 0). Exact in K_" + std::to_string(n) + "."},
+           {"templates", J::array({tsv_half_slice_template("oxide", "1/5", "1/4", n, 1),
+                                   tsv_half_slice_template("metal", "1/4", "3/10", n, 2),
+                                   tsv_half_slice_template("silicon", "3/10", "1", n, 3)})}};
 }
 
 /// The whole open TSV of tsv(n), unsliced, for `symmesh cut --rotation n` in 3D: each layer is
@@ -523,6 +583,11 @@ const std::vector<std::pair<std::string, Entry>>& registry() {
            {"3D open TSV, " + std::to_string(n) + "-gon prism, via lined by 2 layers, 3 regions, " +
                 std::to_string(n) + " slices",
             [n] { return tsv(n); }}});
+    for (int n : {8, 16, 32, 64, 128})
+      v.push_back({"tsv-half-" + std::to_string(n),
+                   {"3D open TSV, " + std::to_string(n) + "-gon prism, 3 regions, " +
+                        std::to_string(2 * n) + " half-slices (Algorithm 6.5)",
+                    [n] { return tsv_half(n); }}});
     v.push_back({"tsv-whole-8",
                  {"3D open 8-TSV, whole (3 annulus prisms as PLCs, for cut --rotation 8)",
                   [] { return tsv_whole(8); }}});
