@@ -170,6 +170,9 @@ for n in 8 128; do
 and r['instances'] == 3 * 2 * $n and r['lemma_4_2_holds'], r" "$TMP/tsv-half-$n.json" \
     && pass "auto runs the combined method on tsv-half-$n ($((2 * n)) half-slices), certified" \
     || fail "auto on tsv-half-$n: method, instances or certificate"
+  # The structure instance keeps the n-fold symmetry (rotation by 2pi/n; the .msh of the auto run).
+  if msg=$($PY tests/cli/symmetry_check.py "$TMP/tsv-half-$n.msh" "$n" 1 2>&1); then
+    pass "tsv-half-$n: $msg under rot(2pi/$n)"; else fail "tsv-half-$n: $msg"; fi
 done
 $PY -c "import json,sys; assert json.load(open(sys.argv[1]))['method'] == 'reflective'" \
   "$TMP/finfet.json" && pass "auto runs the reflective method on the FinFET" \
