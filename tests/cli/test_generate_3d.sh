@@ -174,6 +174,20 @@ and r['instances'] == 3 * 2 * $n and r['lemma_4_2_holds'], r" "$TMP/tsv-half-$n.
   if msg=$($PY tests/cli/symmetry_check.py "$TMP/tsv-half-$n.msh" "$n" 1 2>&1); then
     pass "tsv-half-$n: $msg under rot(2pi/$n)"; else fail "tsv-half-$n: $msg"; fi
 done
+# Eq. 4.2 under a group, decided near copy 0 only: the oxide half-slice widened from 22.5 to 30
+# degrees overlaps its mirror images; exit 2 naming instances of the input, no file.
+$PY -c "
+import json, sys
+d = json.load(open(sys.argv[1]))
+for v in d['templates'][0]['vertices']:
+    if 'cos' in v[0]:
+        r = v[0].split('*')[0]
+        v[0], v[1] = r + '*cos(2pi*1/12)', r + '*sin(2pi*1/12)'
+json.dump(d, open(sys.argv[2], 'w'))" "$TMP/tsv-half-8_input.json" "$TMP/half_overlap.json"
+expect_exit 2 "combined: overlapping half-slices are refused" -- \
+  "$BIN" generate "$TMP/half_overlap.json" --size 0.3 -o "$TMP/half_overlap.vtu"
+grep -q "instances T_{[0-9]*,[0-9]*} and T_{[0-9]*,[0-9]*} overlap" "$TMP/stderr" && [ ! -e "$TMP/half_overlap.vtu" ] \
+  && pass "the refusal names the overlapping instances, no file" || fail "overlap refusal: $(cat "$TMP/stderr")"
 $PY -c "import json,sys; assert json.load(open(sys.argv[1]))['method'] == 'reflective'" \
   "$TMP/finfet.json" && pass "auto runs the reflective method on the FinFET" \
   || fail "auto on the FinFET: method"
