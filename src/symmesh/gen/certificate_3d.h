@@ -283,34 +283,10 @@ template <class FT>
 std::optional<std::string> non_consecutive_contact(const core::TemplatedStructure<FT, 3>& x,
                                                    std::size_t n, bool copy_zero_in_slice) {
   if (n < 4 || copy_zero_in_slice) return std::nullopt;
-  // Certified interval boxes of the carriers' cells of copy k of every template filter the
-  // candidates; only copies whose boxes meet copy 0's are decided exactly.
-  const auto cell_boxes = [&](std::size_t k) {
-    std::vector<core::EnclosingBox<FT, 3>> out;
-    for (std::size_t i = 0; i < x.templates.size(); ++i) {
-      const auto& c = x.templates[i].mesh;
-      std::vector<P3<FT>> pts;
-      for (const auto& p : c.points) pts.push_back(x.instances[i][k].transformation(p));
-      for (const auto& e : c.elements)
-        if (e.dim() == 3) out.push_back(core::EnclosingBox<FT, 3>::of(pts, e));
-    }
-    return out;
-  };
-  const auto first = cell_boxes(0);
-  core::TemplatedStructure<FT, 3> y;
-  y.templates = x.templates;
-  y.instances.resize(x.templates.size());
-  for (std::size_t i = 0; i < x.templates.size(); ++i) y.instances[i].push_back(x.instances[i][0]);
-  std::vector<std::size_t> copies;
-  for (std::size_t j = 2; j <= n / 2; ++j) {
-    bool meet = false;
-    for (const auto& b : cell_boxes(j))
-      for (const auto& a : first) meet = meet || a.overlaps(b);
-    if (!meet) continue;
-    copies.push_back(j);
-    for (std::size_t i = 0; i < x.templates.size(); ++i)
-      y.instances[i].push_back(x.instances[i][j]);
-  }
+  // Only the copies 2 .. n/2 whose carrier boxes meet copy 0's are decided exactly.
+  const auto near = support::copies_near_copy_zero(x, 2, n / 2 + 1);
+  const auto& y = near.structure;
+  const std::vector<std::size_t> copies(near.near.begin() + 1, near.near.end());
   if (copies.empty()) return std::nullopt;
   const auto si = core::apply_template(y);
   for (std::size_t i = 0; i < x.templates.size(); ++i)

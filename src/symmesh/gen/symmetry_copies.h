@@ -8,7 +8,9 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -151,12 +153,13 @@ symmetry_copies(const core::TemplatedStructure<FT, D>& x, Symmetry kind) {
   return copies;
 }
 
-/// Copy 0 of every template with the copies whose carrier cells may meet it: `near[t]` is the copy
-/// index of instance t of every template of `structure` (near[0] = 0). With a group of copies,
-/// whatever involves two copies (k, l) is the image under S_l of what involves (copy of S_l^-1
-/// S_k, copy 0), so the instance overlaps (Eq. 4.2) and the interfaces of the whole structure
-/// are those of this one, moved by the group. Certified interval boxes of the carriers' cells
-/// decide which copies are near; the exact work then grows with the copies that are.
+/// Copy 0 of every template with those copies k in [first, last) whose carrier cells may meet
+/// it (certified interval boxes of the cells: the exact work then grows with the copies that
+/// are near, not with all): `near[t]` is the copy index of instance t of every template of
+/// `structure` (near[0] = 0). With a group of copies, whatever involves two copies (k, l) is the
+/// image under S_l of what involves (copy of S_l^-1 S_k, copy 0), so the instance overlaps
+/// (Eq. 4.2) and the interfaces of the whole structure are those of this one (all copies:
+/// [1, n)), moved by the group; the rotational method asks for the copies 2 .. n/2.
 template <class FT, int D>
 struct CopiesNearCopyZero {
   core::TemplatedStructure<FT, D> structure;
@@ -164,7 +167,9 @@ struct CopiesNearCopyZero {
 };
 
 template <class FT, int D>
-CopiesNearCopyZero<FT, D> copies_near_copy_zero(const core::TemplatedStructure<FT, D>& x) {
+CopiesNearCopyZero<FT, D> copies_near_copy_zero(const core::TemplatedStructure<FT, D>& x,
+                                                std::size_t first = 1,
+                                                std::size_t last = SIZE_MAX) {
   const auto cell_boxes = [&](std::size_t k) {
     std::vector<core::EnclosingBox<FT, D>> out;
     for (std::size_t i = 0; i < x.templates.size(); ++i) {
@@ -178,12 +183,12 @@ CopiesNearCopyZero<FT, D> copies_near_copy_zero(const core::TemplatedStructure<F
   };
   CopiesNearCopyZero<FT, D> out;
   out.near.push_back(0);
-  const auto first = cell_boxes(0);
+  const auto zero = cell_boxes(0);
   const std::size_t n = x.instances.empty() ? 0 : x.instances[0].size();
-  for (std::size_t k = 1; k < n; ++k) {
+  for (std::size_t k = first; k < std::min(last, n); ++k) {
     bool meet = false;
     for (const auto& b : cell_boxes(k))
-      for (const auto& a : first) meet = meet || a.overlaps(b);
+      for (const auto& a : zero) meet = meet || a.overlaps(b);
     if (meet) out.near.push_back(k);
   }
   out.structure.templates = x.templates;
