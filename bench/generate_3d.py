@@ -248,17 +248,21 @@ def main():
     fig, ax = plt.subplots(figsize=(6, 4))
     orders = [n for n in TSVS if f"tsv-{n}" in largest]
     tsv = [largest[f"tsv-{n}"] for n in orders]
-    ax.plot(orders, [s["speedup"] for s in tsv], "o-", label="generation vs TetGen whole")
-    ax.plot(orders, [s["saving"] for s in tsv], "s-", label="memory saving (no SVB)")
-    ax.plot(orders, [s["cmd_speedup"] for s in tsv], "^-", label="whole command")
-    if not a.no_gmsh:
-        ax.plot(orders, [s["speedup_gmsh"] for s in tsv], "v-", label="generation vs Gmsh whole")
+    if orders:  # only the series of objects this run measured
+        ax.plot(orders, [s["speedup"] for s in tsv], "o-", label="generation vs TetGen whole")
+        ax.plot(orders, [s["saving"] for s in tsv], "s-", label="memory saving (no SVB)")
+        ax.plot(orders, [s["cmd_speedup"] for s in tsv], "^-", label="whole command")
+        if not a.no_gmsh:
+            ax.plot(orders, [s["speedup_gmsh"] for s in tsv], "v-", label="generation vs Gmsh whole")
     half = [n for n in TSVS if f"tsv-half-{n}" in largest]
     if half:
-        ax.plot(half, [largest[f"tsv-half-{n}"]["speedup"] for n in half], "o:",
-                label="2n half-slices vs TetGen whole")
-        ax.plot(half, [largest[f"tsv-half-{n}"]["saving"] for n in half], "s:",
-                label="2n half-slices: memory saving")
+        hs = [largest[f"tsv-half-{n}"] for n in half]
+        ax.plot(half, [s["speedup"] for s in hs], "o:", label="2n half-slices vs TetGen whole")
+        ax.plot(half, [s["saving"] for s in hs], "s:", label="2n half-slices: memory saving")
+        ax.plot(half, [s["cmd_speedup"] for s in hs], "^:", label="2n half-slices: whole command")
+        if not a.no_gmsh:
+            ax.plot(half, [s["speedup_gmsh"] for s in hs], "v:",
+                    label="2n half-slices vs Gmsh whole")
     ax.plot(orders or half, orders or half, "k--", label="n")
     ax.set_xscale("log", base=2)
     ax.set_yscale("log", base=2)
