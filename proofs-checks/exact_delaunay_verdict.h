@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <map>
 #include <utility>
@@ -78,6 +79,9 @@ inline int far_side(const std::array<ExactPoint, 4>& x) {
 /// by vertex deletion or insertion: technique_5_8_3d.cpp, resolve_slivers).
 struct DelaunayVerdict {
   std::size_t interior = 0, not_locally_delaunay = 0, overfull = 0;
+  /// Of those, the ones whose apex is inside by more than rounding: |D| / L^5 > 1e-9 (the
+  /// library's allowance where rounded copies make ties systematic, technique_5_8_3d.cpp).
+  std::size_t beyond_rounding = 0;
   mpq_class volume = 0;
 };
 
@@ -125,12 +129,24 @@ inline DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSv
       facets[f].push_back({c, apex});
     }
   // Whether apex `a` of cell `d` lies strictly inside the circumsphere of cell `c` (exact).
-  const auto inside = [&](const ExactCell& c, const ExactCell& d, std::size_t a) {
+  // Whether apex `a` of cell `d` lies strictly inside the circumsphere of cell `c` (exact), and
+  // by how much: |D| / L^5, L the largest distance among the five points.
+  const auto inside = [&](const ExactCell& c, const ExactCell& d, std::size_t a, double& by) {
     const bool own = c.instance == d.instance;
     const auto& x = own ? c.in_template : c.image;
     const auto& e = own ? d.in_template[a] : d.image[a];
     const mpq_class det = lifted_determinant({&x[0], &x[1], &x[2], &x[3]}, e);
-    return sgn(det) != 0 && sgn(det) == -(own ? c.far_in_template : c.far_image);
+    if (!(sgn(det) != 0 && sgn(det) == -(own ? c.far_in_template : c.far_image))) return false;
+    double span = 0;
+    const std::array<const ExactPoint*, 5> p{&x[0], &x[1], &x[2], &x[3], &e};
+    for (const auto* u : p)
+      for (const auto* w : p) {
+        double dd = 0;
+        for (std::size_t k = 0; k < 3; ++k) dd += std::pow(mpq_class((*u)[k] - (*w)[k]).get_d(), 2);
+        span = std::max(span, std::sqrt(dd));
+      }
+    by = std::abs(det.get_d()) / std::pow(span, 5);
+    return true;
   };
   for (const auto& [f, on] : facets) {
     if (on.size() > 2) ++out.overfull;
@@ -138,8 +154,11 @@ inline DelaunayVerdict exact_delaunay_verdict(const mesh::TemplatedMeshCompactSv
     ++out.interior;
     const auto& [c1, a1] = on[0];
     const auto& [c2, a2] = on[1];
-    if (inside(cells[c1], cells[c2], a2) || inside(cells[c2], cells[c1], a1))
-      ++out.not_locally_delaunay;
+    double by1 = 0, by2 = 0;
+    const bool in1 = inside(cells[c1], cells[c2], a2, by1),
+               in2 = inside(cells[c2], cells[c1], a1, by2);
+    if (in1 || in2) ++out.not_locally_delaunay;
+    if (std::max(by1, by2) > 1e-9) ++out.beyond_rounding;
   }
   return out;
 }

@@ -21,6 +21,16 @@
 // coordinates). Dropped (Lines 6-18, no boundary insertions: the
 // templates are only re-tetrahedralized): on the block on its base, interface triangles are not
 // locally Delaunay.
+// Claim (3D, acute creases, spec/adaptation.md#tmesh-adaptation): on a triangular prism
+// template with a 3°-44° crease between its two legs (second leg 0.3-1.5 long, the first 1),
+// alone or mirrored across its first leg (y = 0, exact), after 0-2 rounds of uniform refinement,
+// Technique 5.8 in 3D with crease mirroring ends within 32 rounds with a certified templated mesh
+// of the same boundary area whose AT has every interior triangle locally Delaunay by exact
+// in-sphere signs, up to ties by rounding (|D| / L^5 <= 1e-9: a leg triangle and its mirror
+// image are cospherical in the reals, and mirror points across a slanted bisector are rounded).
+// Dropped (no mirror points: bisection and shells around the crease vertices only): at 3°-10° the
+// legs keep encroaching on each other and the refinement cap or the round cap ends it
+// (AdaptationLimit).
 #include "proofs-checks/adaptation_support.h"
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/exact_delaunay_verdict.h"
@@ -34,6 +44,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -138,6 +149,98 @@ void delaunay_after_technique_5_8_3d(const BoxInput& g, bool boundary_insertions
       no_picture);
 }
 
+/// A triangular prism template, its crease of `degrees` between the legs y = 0 (length 1) and
+/// the one at that angle (length `leg`), height 1; alone or with its mirror image across y = 0.
+struct AcutePrism {
+  int degrees = 10;
+  double leg = 0.7;
+  bool mirrored = false;
+  int refinements = 0;
+
+  std::string description() const {
+    return "prism, " + std::to_string(degrees) + "-degree crease, leg " + std::to_string(leg) +
+           (mirrored ? ", mirrored across y = 0" : "") + ", " + std::to_string(refinements) +
+           " refinements";
+  }
+  mesh::TemplatedMeshCompactSvb build() const {
+    const double a = degrees * 3.14159265358979323846 / 180;
+    mesh::TemplatedMeshCompactSvb t;
+    t.templated.point_dimension = 3;
+    mesh::MeshTemplate m;
+    m.mesh.point_dimension = 3;
+    const double c = leg * std::cos(a), sn = leg * std::sin(a);
+    const double v[6][3] = {{0, 0, 0}, {1, 0, 0}, {c, sn, 0}, {0, 0, 1}, {1, 0, 1}, {c, sn, 1}};
+    for (const auto& q : v) m.mesh.add_vertex(q);
+    for (std::array<mesh::IndexType, 4> cell :
+         {std::array<mesh::IndexType, 4>{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}}) {
+      double e[3][3];
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) e[k][i] = v[cell[std::size_t(k + 1)]][i] - v[cell[0]][i];
+      const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                         e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+      if (det < 0) std::swap(cell[2], cell[3]);
+      m.mesh.add_cell(mesh::ElementType::tetrahedron, cell.data());
+    }
+    t.templated.transformations.push_back({{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}});
+    m.transformation_indices.push_back(0);
+    m.region_ids.push_back(1);
+    if (mirrored) {
+      t.templated.transformations.push_back({{1, 0, 0, 0, -1, 0, 0, 0, 1}, {0, 0, 0}});
+      m.transformation_indices.push_back(1);
+      m.region_ids.push_back(1);
+      t.tables.push_back({0, 0, {{0, 0}, {1, 1}, {3, 3}, {4, 4}}});
+      t.identifications.push_back({0, 1, 0});
+    }
+    t.templated.templates.push_back(std::move(m));
+    adapt::expand_identifications(t);
+    for (int k = 0; k < refinements; ++k)
+      adapt::refine_where(t, [](const adapt::CellView&) { return true; });
+    return t;
+  }
+};
+
+rc::Gen<AcutePrism> acute_prism(int lowest, int highest) {
+  return rc::gen::apply(
+      [](int degrees, int leg_tenths, bool mirrored, int refinements) {
+        return AcutePrism{degrees, leg_tenths / 10.0, mirrored, refinements};
+      },
+      rc::gen::inRange(lowest, highest + 1), rc::gen::inRange(3, 16), rc::gen::arbitrary<bool>(),
+      rc::gen::inRange(0, 3));
+}
+
+void delaunay_at_acute_crease(const AcutePrism& g, bool crease_mirrors) {
+  std::string text = g.description();
+  const auto failure = [&] { return text; };
+  const auto no_picture = [] { return std::string(); };
+  auto t = g.build();
+  const double boundary = adapt::certify_conformity(t).boundary_measure;
+  bool ended = true;
+  try {
+    const auto report = adapt::make_delaunay(t, 32, nullptr, crease_mirrors);
+    RC_TAG(report.crease_mirror_points > 0 ? "mirror points inserted" : "no mirror points");
+  } catch (const std::runtime_error& e) { // AdaptationLimit, or TetGen's MeshingError
+    ended = false;
+    text += std::string("\n") + e.what();
+  }
+  SYMMESH_PROOF_ASSERT(ended, failure, no_picture);
+  SYMMESH_PROOF_ASSERT(t.is_valid(), failure, no_picture);
+  SYMMESH_PROOF_ASSERT(adapt::certify_conformity(t, boundary).holds, failure, no_picture);
+  const auto verdict = exact_delaunay_verdict(t);
+  SYMMESH_PROOF_ASSERT(verdict.overfull == 0, failure, no_picture);
+  // Mirror points across a slanted bisector are rounded, so a leg triangle and its mirror image
+  // are cospherical only up to rounding: such ties count (|D| / L^5 <= 1e-9), as in the library.
+  RC_TAG(verdict.not_locally_delaunay ? "ties up to rounding" : "no ties");
+  SYMMESH_PROOF_ASSERT(
+      verdict.beyond_rounding == 0,
+      [&] {
+        return text + "\n(" + std::to_string(verdict.beyond_rounding) + " of " +
+               std::to_string(verdict.interior) +
+               " interior triangles of AT not locally Delaunay beyond rounding)";
+      },
+      no_picture);
+}
+
 } // namespace
 
 void register_technique_5_8(std::vector<Property>& p) {
@@ -179,6 +282,20 @@ void register_technique_5_8(std::vector<Property>& p) {
                [] {
                  return rc::detail::toProperty(
                      [] { delaunay_after_technique_5_8_3d(*boxes::block_on_base(3), false); });
+               }});
+  p.push_back({kClaim, "crease_mirroring_ends_ping_pong_3d", 3, Kind::holds,
+               "Technique 5.8 in 3D with crease mirroring: on a triangular prism with a "
+               "3-44 degree crease between its legs (alone or mirrored across a leg, refined "
+               "0-2 times) it ends within 32 rounds with a certified templated mesh whose AT has "
+               "every interior triangle locally Delaunay (exact signs; ties up to rounding, "
+               "|D|/L^5 <= 1e-9, allowed)",
+               [] {
+                 return rc::detail::toProperty(
+                     [] { delaunay_at_acute_crease(*acute_prism(3, 44), true); });
+               },
+               [] {
+                 return rc::detail::toProperty(
+                     [] { delaunay_at_acute_crease(*acute_prism(3, 10), false); });
                }});
 }
 

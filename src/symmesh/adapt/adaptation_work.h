@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -141,6 +142,8 @@ using Protected = std::vector<std::vector<char>>;
 /// meet with an angle sum below 90°; 3D, the ends of template boundary edges where they meet
 /// with a dihedral angle sum below 60° (acute creases). Closed under the identification tables.
 Protected acute_corners(const Session& s);
+/// 3D: the dihedral angle sum (degrees) at every edge of w, over the cells around it.
+std::map<std::pair<IndexType, IndexType>, double> dihedral_angle_sums(const Work& w);
 
 std::array<double, 3> sub3(const double* a, const double* b);
 std::array<double, 3> cross3(const std::array<double, 3>& u, const std::array<double, 3>& v);
@@ -186,7 +189,14 @@ IndexType apex(const Cell& c, std::initializer_list<IndexType> f);
 IndexType apex(const Cell& c, const std::array<IndexType, 3>& f);
 double longest_edge(const Work& w, const IndexType* c, int n, IndexType& a, IndexType& b);
 
+/// 3D: the template boundary triangles (sorted vertices).
+std::vector<std::array<IndexType, 3>> surface_of(const Work& w);
+/// 3D: replaces the cells of w by TetGen's constrained Delaunay tetrahedralization of its
+/// vertices and the given boundary triangles.
+void retetrahedralize_template(Work& w, const std::vector<std::array<IndexType, 3>>& surface);
+
 /// Technique 5.8 in 3D (technique_5_8_3d.cpp; spec/adaptation.md#tmesh-adaptation).
-DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progress* progress);
+DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progress* progress,
+                                bool crease_mirrors);
 
 } // namespace symmesh::adapt::work

@@ -3,6 +3,7 @@
 // and not template-aware locally Delaunay interface triangles, constrained Delaunay
 // re-tetrahedralization of each template (TetGen) and sliver removal, in rounds.
 #include "symmesh/adapt/adaptation_work.h"
+#include "symmesh/adapt/crease_mirroring_3d.h"
 #include "symmesh/gen/tetrahedral_mesher.h"
 
 #include <algorithm>
@@ -62,6 +63,23 @@ struct PointGrid {
     for (int i = 0; i < 3; ++i) {
       lo[i] = std::int64_t(std::floor((c[i] - r) / h));
       hi[i] = std::int64_t(std::floor((c[i] + r) / h));
+    }
+    // A ball much larger than the grid (the circumball of a flat boundary triangle) covers more
+    // grid cells than are occupied: then look at the occupied ones.
+    double box = 1;
+    for (int i = 0; i < 3; ++i) box *= double(hi[i] - lo[i] + 1);
+    if (box > double(cells.size())) {
+      const auto coordinate = [](std::uint64_t key, int shift) {
+        return std::int64_t((key >> shift) & 0x1fffff) - (1 << 20);
+      };
+      for (const auto& [key, vertices] : cells) {
+        const std::int64_t ijk[3] = {coordinate(key, 42), coordinate(key, 21), coordinate(key, 0)};
+        bool in = true;
+        for (int i = 0; i < 3; ++i) in = in && ijk[i] >= lo[i] && ijk[i] <= hi[i];
+        if (in)
+          for (IndexType v : vertices) visit(v);
+      }
+      return;
     }
     for (auto i = lo[0]; i <= hi[0]; ++i)
       for (auto j = lo[1]; j <= hi[1]; ++j)
@@ -192,15 +210,61 @@ bool delaunay_face(const P3& a, const P3& b, const P3& c, const std::vector<P3>&
   return true;
 }
 
-/// Technique 5.8, step "boundary facets Delaunay": the edges to bisect of the template boundary
-/// triangles that are no Delaunay face (delaunay_face) of the vertices near them — of their own
-/// template, and, for an interface triangle, of the instance across it too (AT's coordinates).
-/// With every boundary triangle a Delaunay face, the constrained Delaunay tetrahedralization of
-/// a template is Delaunay.
-std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
-                                              const std::vector<TableIndex>& index) {
+/// What the encroachment step does next: edges to bisect, and points to insert on template
+/// boundary triangles (mirror images across acute creases, crease_mirroring_3d.h), each triangle
+/// they resolve with the edge to bisect instead when none of its mirror points can be inserted
+/// (it falls outside the leg, or onto a vertex).
+struct Encroached {
+  std::vector<TemplateEdge> edges;
+  std::vector<BoundaryPoint> mirrors;
+  std::vector<std::pair<TemplateEdge, std::vector<std::size_t>>> fallback;
+};
+
+/// The unit normal of triangle (a, b, c).
+std::array<double, 3> unit_normal(const double* a, const double* b, const double* c) {
+  auto n = cross3(sub3(b, a), sub3(c, a));
+  const double l = std::sqrt(dot3(n, n));
+  for (auto& x : n) x /= l;
+  return n;
+}
+
+/// Collects the mirror images, across an acute crease of template t, of the vertices `near` of
+/// t inside the diametral ball (centre o, squared radius rho2, in the coordinates `image` puts
+/// them in) of boundary triangle f of t, and their indices in `out` into `used`.
+using SeenMirrors = std::map<std::tuple<std::size_t, double, double, double>, std::size_t>;
+template <class Image>
+void mirror_encroaching(const Session& s, const std::vector<std::vector<AcuteCrease>>& creases,
+                        std::size_t t, const std::array<IndexType, 3>& f,
+                        const std::vector<IndexType>& near, const P3& o, double rho2, Image&& image,
+                        SeenMirrors& seen, std::vector<BoundaryPoint>& out,
+                        std::vector<std::size_t>& used) {
+  const auto& w = s.w[t];
+  if (creases[t].empty()) return;
+  for (IndexType q : near) {
+    if (!(CGAL::squared_distance(o, image(q)) < rho2)) continue;
+    const auto p = crease_mirror(w, creases[t], {w.p(f[0]), w.p(f[1]), w.p(f[2])}, q);
+    if (!p) continue;
+    const auto [it, fresh] = seen.emplace(std::tuple{t, (*p)[0], (*p)[1], (*p)[2]}, out.size());
+    if (fresh) out.push_back({t, *p, unit_normal(w.p(f[0]), w.p(f[1]), w.p(f[2]))});
+    used.push_back(it->second);
+  }
+}
+
+/// Technique 5.8, step "boundary facets Delaunay": the template boundary triangles that are no
+/// Delaunay face (delaunay_face) of the vertices near them — of their own template, and, for an
+/// interface triangle, of the instance across it too (AT's coordinates). Each is resolved by the
+/// mirror images of the points of the other leg of an acute crease that encroach on it, where
+/// there are such points, else by bisecting an edge. With every boundary triangle a Delaunay
+/// face, the constrained Delaunay tetrahedralization of a template is Delaunay.
+Encroached encroached_boundary(const Session& s, const Round3& r,
+                               const std::vector<TableIndex>& index,
+                               const std::vector<std::vector<AcuteCrease>>& creases) {
   std::set<TemplateEdge> bad;
+  Encroached out;
+  SeenMirrors seen;
+  std::vector<std::size_t> used;
   std::vector<P3> near;
+  std::vector<IndexType> near_i, near_j;
   for (std::size_t t = 0; t < s.w.size(); ++t) {
     const auto& w = s.w[t];
     for (const auto& entry : r.facets[t]) {
@@ -208,14 +272,24 @@ std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
       const auto& f = entry.first;
       const P3 a = p3(w.p(f[0])), b = p3(w.p(f[1])), c = p3(w.p(f[2]));
       const P3 o = CGAL::circumcenter(a, b, c);
-      const double reach = 4.5 * std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
+      const double rho2 = CGAL::squared_distance(o, a);
+      const double reach = 4.5 * std::sqrt(rho2) * (1 + 1e-6);
       const double oc[3] = {o.x(), o.y(), o.z()};
       near.clear();
+      near_i.clear();
       r.grids[t].near(oc, reach, [&](IndexType q) {
-        if (q != f[0] && q != f[1] && q != f[2]) near.push_back(p3(w.p(q)));
+        if (q != f[0] && q != f[1] && q != f[2]) near.push_back(p3(w.p(q))), near_i.push_back(q);
       });
       std::optional<P3> by;
-      if (!delaunay_face(a, b, c, near, by)) bad.insert(edge_to_split(w, t, f, {a, b, c}, *by));
+      if (delaunay_face(a, b, c, near, by)) continue;
+      used.clear();
+      mirror_encroaching(
+          s, creases, t, f, near_i, o, rho2, [&](IndexType q) { return p3(w.p(q)); }, seen,
+          out.mirrors, used);
+      if (used.empty())
+        bad.insert(edge_to_split(w, t, f, {a, b, c}, *by));
+      else
+        out.fallback.push_back({edge_to_split(w, t, f, {a, b, c}, *by), used});
     }
   }
   for (const auto& id : s.t.identifications)
@@ -228,25 +302,52 @@ std::vector<TemplateEdge> encroached_boundary(const Session& s, const Round3& r,
       for_each_interface_triangle(s, r, i, j, map, [&](const auto& f, IndexType, const auto& g) {
         const P3 a = image3(s, i, f[0]), b = image3(s, i, f[1]), c = image3(s, i, f[2]);
         const P3 o = CGAL::circumcenter(a, b, c);
-        const double reach = 4.5 * std::sqrt(CGAL::squared_distance(o, a)) * (1 + 1e-6);
+        const double rho2 = CGAL::squared_distance(o, a);
+        const double reach = 4.5 * std::sqrt(rho2) * (1 + 1e-6);
         const double oc[3] = {o.x(), o.y(), o.z()};
         near.clear();
+        near_i.clear();
+        near_j.clear();
         // Both sides: the sphere must be empty of the two instances' vertices at once.
         double local[3];
         apply_inverse(s.transformation(i), oc, local);
         r.grids[ti].near(local, reach, [&](IndexType q) {
-          if (q != f[0] && q != f[1] && q != f[2]) near.push_back(image3(s, i, q));
+          if (q != f[0] && q != f[1] && q != f[2])
+            near.push_back(image3(s, i, q)), near_i.push_back(q);
         });
         apply_inverse(s.transformation(j), oc, local);
         r.grids[tj].near(local, reach, [&](IndexType q) {
-          if (q != g[0] && q != g[1] && q != g[2]) near.push_back(image3(s, j, q));
+          if (q != g[0] && q != g[1] && q != g[2])
+            near.push_back(image3(s, j, q)), near_j.push_back(q);
         });
         std::optional<P3> by;
-        if (!delaunay_face(a, b, c, near, by))
+        if (delaunay_face(a, b, c, near, by)) return;
+        // A crease of either template: the mirror goes into that template's copy of the triangle.
+        used.clear();
+        mirror_encroaching(
+            s, creases, ti, f, near_i, o, rho2, [&](IndexType q) { return image3(s, i, q); }, seen,
+            out.mirrors, used);
+        mirror_encroaching(
+            s, creases, tj, g, near_j, o, rho2, [&](IndexType q) { return image3(s, j, q); }, seen,
+            out.mirrors, used);
+        if (used.empty())
           bad.insert(edge_to_split(s.w[ti], ti, f, {a, b, c}, *by));
+        else
+          out.fallback.push_back({edge_to_split(s.w[ti], ti, f, {a, b, c}, *by), used});
       });
     }
-  return {bad.begin(), bad.end()};
+  out.edges.assign(bad.begin(), bad.end());
+  return out;
+}
+
+} // namespace
+
+/// The template boundary triangles (sorted vertices).
+std::vector<std::array<IndexType, 3>> surface_of(const Work& w) {
+  std::vector<std::array<IndexType, 3>> out;
+  for (const auto& [f, around] : facet_map_3d(w))
+    if (around.size() == 1) out.push_back(f);
+  return out;
 }
 
 /// Replaces the cells of template `w` by TetGen's constrained Delaunay tetrahedralization of its
@@ -266,6 +367,7 @@ void retetrahedralize_template(Work& w, const std::vector<std::array<IndexType, 
   w = std::move(fresh);
 }
 
+namespace {
 /// Replaces every template's cells by TetGen's constrained Delaunay tetrahedralization of its
 /// vertices and its boundary triangles (kept as they are; TetGen's Steiner points, if any, are
 /// template-interior and come last).
@@ -431,14 +533,6 @@ std::vector<TemplateEdge> non_tald_3d(const Session& s, const Round3& r,
         });
   }
   return {bad.begin(), bad.end()};
-}
-
-/// The template boundary triangles (sorted vertices).
-std::vector<std::array<IndexType, 3>> surface_of(const Work& w) {
-  std::vector<std::array<IndexType, 3>> out;
-  for (const auto& [f, around] : facet_map_3d(w))
-    if (around.size() == 1) out.push_back(f);
-  return out;
 }
 
 /// Whether boundary edge {a, b} between boundary triangles (a, b, c) and (a, b, d) of w should be
@@ -661,13 +755,14 @@ std::pair<std::size_t, std::size_t> resolve_slivers(Session& s, DelaunayReport& 
 /// boundary triangle at every related edge, until none is encroached; (2) the constrained
 /// Delaunay tetrahedralization of every template; (3) bisecting the interface triangles that are
 /// not template-aware locally Delaunay. Ends when (3) finds none.
-DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progress* progress) {
+DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progress* progress,
+                                bool crease_mirrors) {
   DelaunayReport rep;
   const auto limit = [&](const std::string& what) {
     s.store();
     throw AdaptationLimit("Technique 5.8 in 3D: " + what +
-                          " (ping-pong encroachment, Figure 5.17: shells around acute "
-                          "creases end it at 44 degrees, not at sharper creases)");
+                          " (ping-pong encroachment, Figure 5.17: mirror points end it at acute "
+                          "creases between two planar legs, not at other sharp features)");
   };
   const auto cell_count = [&] {
     std::size_t n = 0;
@@ -685,20 +780,31 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
     rep.flips += surface_lawson(s, 64);
     auto index = index_tables(s.t);
     std::vector<TemplateEdge> bad;
+    std::vector<BoundaryPoint> mirrors;
+    std::vector<std::pair<TemplateEdge, std::vector<std::size_t>>> fallback;
     {
       const Round3 r(s);
-      bad = encroached_boundary(s, r, index);
+      auto e =
+          encroached_boundary(s, r, index,
+                              crease_mirrors ? acute_crease_edges(s)
+                                             : std::vector<std::vector<AcuteCrease>>(s.w.size()));
+      bad = std::move(e.edges);
+      mirrors = std::move(e.mirrors);
+      fallback = std::move(e.fallback);
     }
     bool phase_tald = false;
-    if (bad.empty()) {
+    if (bad.empty() && mirrors.empty()) {
       phase_tald = true;
       {
         const Round3 r(s);
         retetrahedralize(s, r);
       }
       rep.flips += remove_slivers(s);
-      // Ties up to rounding are accepted only where rotations round the interface copies.
-      const bool ties_up_to_rounding = !signed_permutation_matrices(s);
+      // Ties up to rounding are accepted only where rotations round the interface copies, or
+      // where mirror points across a slanted crease bisector were rounded (a triangle of one leg
+      // and its mirror image lie on one sphere, in the reals).
+      const bool ties_up_to_rounding =
+          !signed_permutation_matrices(s) || rep.crease_mirror_points > 0;
       const auto [deleted, inserted] = resolve_slivers(s, rep, ties_up_to_rounding);
       rep.vertices_deleted += deleted;
       rep.vertices_inserted += inserted;
@@ -726,6 +832,12 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
       bad = non_tald_3d(s, r, index);
       if (bad.empty()) break;
     }
+    if (rep.rounds == max_rounds && bad.empty()) {
+      const auto& m = mirrors.front();
+      limit("after " + std::to_string(max_rounds) + " rounds (--max-rounds), template " +
+            std::to_string(m.t) + " boundary triangles at an acute crease are still encroached (" +
+            std::to_string(mirrors.size()) + " mirror points to insert)");
+    }
     if (rep.rounds == max_rounds) {
       const auto& e = bad.front();
       limit("after " + std::to_string(max_rounds) + " rounds (--max-rounds), template " +
@@ -736,6 +848,21 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
     }
     // Protection balls: recomputed every round, as the points put on an acute crease are
     // protected too (in 2D the corners are the input's and never move).
+    // Mirror points first: a triangle none of whose mirror points went in (outside the leg, or
+    // already a vertex) is bisected. An edge that a mirror point split is left to the next round.
+    const auto inserted = insert_boundary_points(s, mirrors);
+    std::size_t mirrored = 0;
+    for (std::size_t n : inserted) mirrored += n;
+    rep.crease_mirror_points += mirrored;
+    for (const auto& [e, points] : fallback)
+      if (std::none_of(points.begin(), points.end(), [&](std::size_t k) { return inserted[k]; }))
+        bad.push_back(e);
+    std::sort(bad.begin(), bad.end());
+    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    if (mirrored)
+      std::erase_if(bad, [&](const TemplateEdge& e) {
+        return s.w[e.t].cells_with({e.a, e.b}).empty();
+      });
     const auto protect = acute_corners(s);
     rep.bisections += bisect(s, bad, &protect);
     ++rep.rounds;
@@ -745,7 +872,8 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
       progress->message("Technique 5.8 round " + std::to_string(rep.rounds) + ": " +
                         std::to_string(bad.size()) + " boundary edges bisected (" +
                         (phase_tald ? "not template-aware locally Delaunay" : "encroached") +
-                        "), " + std::to_string(cells) + " template cells");
+                        "), " + std::to_string(mirrored) + " crease mirror points, " +
+                        std::to_string(cells) + " template cells");
     }
   }
   return rep;

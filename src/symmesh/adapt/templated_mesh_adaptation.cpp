@@ -219,13 +219,7 @@ std::vector<char> acute_corners_2d(const Work& w) {
   return acute;
 }
 
-/// 3D: the ends of the template boundary edges at which the template's cells meet with a
-/// dihedral angle sum below 60° — the acute creases. In a cross-section through a crease the
-/// crease is an acute corner; a point put on the crease is protected like its ends. Ping-pong
-/// encroachment needs angles of at most 45° (Section 5.2.5). With 90° as in 2D, the slices of
-/// the 16-, 32- and 128-TSV had protected creases (between 60° and 90°) whose shell points made
-/// slivers that no flip or vertex move removed.
-std::vector<char> acute_creases_3d(const Work& w) {
+std::map<std::pair<IndexType, IndexType>, double> dihedral_angle_sums(const Work& w) {
   std::map<std::pair<IndexType, IndexType>, double> dihedral;
   for (const auto& c : w.cells)
     for (int i = 0; i < 4; ++i)
@@ -241,6 +235,17 @@ std::vector<char> acute_creases_3d(const Work& w) {
         const auto n2 = cross3(ab, sub3(w.p(c[std::size_t(l)]), w.p(a)));
         dihedral[{std::min(a, b), std::max(a, b)}] += angle_between(n1.data(), n2.data(), 3);
       }
+  return dihedral;
+}
+
+/// 3D: the ends of the template boundary edges at which the template's cells meet with a
+/// dihedral angle sum below 60° — the acute creases. In a cross-section through a crease the
+/// crease is an acute corner; a point put on the crease is protected like its ends. Ping-pong
+/// encroachment needs angles of at most 45° (Section 5.2.5). With 90° as in 2D, the slices of
+/// the 16-, 32- and 128-TSV had protected creases (between 60° and 90°) whose shell points made
+/// slivers that no flip or vertex move removed.
+std::vector<char> acute_creases_3d(const Work& w) {
+  const auto dihedral = dihedral_angle_sums(w);
   std::vector<char> acute(w.vertex_count(), 0);
   for (const auto& [e, angle] : dihedral)
     if (angle < 60 && is_boundary_edge(w, e.first, e.second))
@@ -1152,11 +1157,11 @@ std::vector<TemplateEdge> non_tald_edges(const mesh::TemplatedMeshCompactSvb& t)
 }
 
 DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
-                             mesh::Progress* progress) {
+                             mesh::Progress* progress, bool crease_mirrors) {
   Session s(t);
   if (progress) progress->stage("Technique 5.8", max_rounds, "rounds");
   if (!s.w.empty() && s.w[0].d == 3) {
-    const auto r = make_delaunay_3d(s, max_rounds, progress);
+    const auto r = make_delaunay_3d(s, max_rounds, progress, crease_mirrors);
     s.store();
     return r;
   }

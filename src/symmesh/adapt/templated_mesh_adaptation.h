@@ -64,8 +64,9 @@ std::vector<TemplateEdge> non_tald_edges(const mesh::TemplatedMeshCompactSvb& t)
 
 struct DelaunayReport {
   std::size_t rounds = 0, flips = 0, bisections = 0;
-  std::size_t vertices_deleted = 0;  ///< 3D: template-interior vertices of slivers
-  std::size_t vertices_inserted = 0; ///< 3D: centroids of slivers on boundary vertices
+  std::size_t vertices_deleted = 0;     ///< 3D: template-interior vertices of slivers
+  std::size_t vertices_inserted = 0;    ///< 3D: centroids of slivers on boundary vertices
+  std::size_t crease_mirror_points = 0; ///< 3D: mirror images across acute creases (copies)
 };
 
 /// Technique 5.8 in the plane: Lawson flips in every template, then, while some interface edge
@@ -76,9 +77,12 @@ struct DelaunayReport {
 /// Figure 5.17; spec/adaptation.md). Then every interior edge of AT is locally Delaunay, so AT is
 /// a constrained Delaunay triangulation of its domain (Delaunay when the domain is convex,
 /// Lemma 4.5). Throws AdaptationLimit naming an offending edge after `max_rounds` rounds.
-/// \pre t.templated.point_dimension == 2, expand_identifications(t) was applied
+/// In 3D (technique_5_8_3d.cpp), a boundary triangle encroached by a point of the other leg of
+/// an acute crease gets that point's mirror image (crease_mirroring_3d.h) unless
+/// `crease_mirrors` is false (the property's dropped hypothesis).
+/// \pre t.templated.point_dimension is 2 or 3, expand_identifications(t) was applied
 DelaunayReport make_delaunay(mesh::TemplatedMeshCompactSvb& t, std::size_t max_rounds,
-                             mesh::Progress* progress = nullptr);
+                             mesh::Progress* progress = nullptr, bool crease_mirrors = true);
 
 struct SmoothReport {
   std::size_t interior_moves = 0; ///< template-interior vertices moved

@@ -190,10 +190,13 @@ int run_adapt(const AdaptOptions& o) {
     }
     if (o.delaunay) {
       const auto r = adapt::make_delaunay(t, o.max_rounds, progress.get());
-      steps.push_back(
-          {{"delaunay", r.rounds}, {"flips", r.flips}, {"edges_bisected", r.bisections}});
+      steps.push_back({{"delaunay", r.rounds},
+                       {"flips", r.flips},
+                       {"edges_bisected", r.bisections},
+                       {"crease_mirror_points", r.crease_mirror_points}});
       say("delaunay: " + std::to_string(r.flips) + " flips, " + std::to_string(r.bisections) +
-          " interface edges bisected in " + std::to_string(r.rounds) + " rounds");
+          " interface edges bisected, " + std::to_string(r.crease_mirror_points) +
+          " crease mirror points inserted in " + std::to_string(r.rounds) + " rounds");
     }
     // Section 5.2.1 merges, each reported as its step and a progress line.
     const auto merge_step = [&](const std::string& option, const std::string& key, auto merge) {
