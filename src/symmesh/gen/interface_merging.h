@@ -32,12 +32,18 @@ GenerationResult generate_merge(const core::TemplatedStructure<support::LazyCycl
 /// Section 5.1.1 in 3D (interface_merging_3d.cpp, spec/generation.md#merge-3d): every 2-face of
 /// every template surface-meshed on its own, the interfaces merged exactly (Algorithm 5.2, then
 /// the overlay of Algorithms 5.3/5.4), TetGen inside each template.
+/// `copies`: the copies of a group symmetry (support::symmetry_copies), when x is one: then only
+/// the interfaces inside copy 0 are merged, as Algorithms 6.1/6.4/6.5 mesh only copy 0's (every
+/// other interface lies on a mirror, which each face's own mesh matches, Lemma 6.1), and overlap,
+/// bookkeeping and certificate go over the copies near copy 0 instead of every instance pair.
 /// \pre x is a templated geometry in space; o.size > 0. Throws std::invalid_argument for other
 /// input, MeshingError when TetGen fails or changes a boundary, MergeError when the overlay does
 /// not settle within its rounds (naming the interface).
-GenerationResult generate_merge(const core::TemplatedStructure<Exact, 3>& x,
-                                const GenerationOptions& o);
-GenerationResult generate_merge(const core::TemplatedStructure<support::LazyCyclotomic, 3>& x,
-                                const GenerationOptions& o);
+GenerationResult
+generate_merge(const core::TemplatedStructure<Exact, 3>& x, const GenerationOptions& o,
+               const std::vector<core::RigidTransformation<Exact, 3>>& copies = {});
+GenerationResult generate_merge(
+    const core::TemplatedStructure<support::LazyCyclotomic, 3>& x, const GenerationOptions& o,
+    const std::vector<core::RigidTransformation<support::LazyCyclotomic, 3>>& copies = {});
 
 } // namespace symmesh::gen

@@ -391,7 +391,9 @@ std::optional<std::string> triangulation_defect(const core::BoundarySubdivision<
 }
 
 template <class FT>
-GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o) {
+GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const GenerationOptions& o,
+                         const std::vector<core::RigidTransformation<FT, 3>>& copies) {
+  const bool group = !copies.empty();
   support::input_stage(x, o, "--method merge");
   const auto stage = [&](const std::string& name, std::size_t total, const std::string& unit) {
     if (o.progress) o.progress->stage(name, total, unit);
@@ -404,25 +406,37 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
   // mappings of all instance pairs; the merge itself is the same.
   const auto t0_symmetry = Clock::now();
   std::string reason;
-  std::size_t rotations = support::rotation_order(x, reason);
+  std::size_t rotations = group ? 0 : support::rotation_order(x, reason);
   // Decided once; a contact is found only when copy 0 is not in a slice, so rotations = 0 then
   // goes with false.
   const bool copy_zero_in_slice =
       rotations > 0 && core::slice_of_copy_zero(x, rotations).has_value();
   if (rotations > 0 && non_consecutive_contact(x, rotations, copy_zero_in_slice)) rotations = 0;
   core::TemplatedStructure<FT, 3> two_copies;
-  if (rotations > 0) {
+  if (rotations > 0 || group) {
     two_copies.templates = x.templates;
-    for (const auto& list : x.instances) two_copies.instances.push_back({list[0], list[1]});
+    for (const auto& list : x.instances)
+      two_copies.instances.push_back(group ? std::vector{list[0]} : std::vector{list[0], list[1]});
   }
   const double symmetry_seconds = seconds_since(t0_symmetry);
   stage("instance overlap (Eq. 4.2)", 0, "");
-  if (const auto overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice))
-    throw std::invalid_argument(core::overlap_message(*overlap));
+  std::optional<core::OverlapWitness> overlap;
+  if (group) {
+    // Every overlap of a group's copies is the image of one with copy 0 (as in generate_3).
+    const auto near = support::copies_near_copy_zero(x);
+    overlap = core::find_instance_overlap(near.structure);
+    if (overlap) {
+      overlap->a.g = near.near[overlap->a.g];
+      overlap->b.g = near.near[overlap->b.g];
+    }
+  } else {
+    overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice);
+  }
+  if (overlap) throw std::invalid_argument(core::overlap_message(*overlap));
   GenerationResult r;
   // The subdivision and the mappings say which faces meet; their classes are not used.
-  const auto bpp =
-      support::boundary_patch_stage(rotations > 0 ? two_copies : x, o, symmetry_seconds, 0, r);
+  const auto bpp = support::boundary_patch_stage(rotations > 0 || group ? two_copies : x, o,
+                                                 symmetry_seconds, 0, r);
   const auto& sds = bpp.subdivisions;
   const std::size_t nt = x.templates.size();
 
@@ -568,9 +582,15 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
       " rounds (Algorithms 5.3/5.4)");
 
   auto candidates = support::svb_candidates<FT, 3>(
-      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations, 0);
+      x, bpp, [&](std::size_t l) { return mapping_pairs_3(bpp, l, boundaries); }, rotations,
+      copies.size());
   std::vector<std::size_t> boundary_vertices;
   for (const auto& b : boundaries) boundary_vertices.push_back(b.exact.size());
+  if (group) {
+    std::vector<std::vector<P3<FT>>> points;
+    for (const auto& b : boundaries) points.push_back(b.exact);
+    support::copy_candidates<FT, 3>(x, points, candidates, {});
+  }
   support::shared_vertex_bookkeeping<FT, 3>(x, boundary_vertices, std::move(candidates),
                                             r.templated);
   r.timings.svb = seconds_since(t0);
@@ -580,6 +600,7 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
 
   support::certificate_stage(o, r, [&] {
     if (o.direct_certificate) return certify_3(x, boundaries);
+    if (group) return certify_copies(x, copies, bpp, boundaries);
     return certify_by_mappings(bpp, boundaries);
   });
   return r;
@@ -587,12 +608,15 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
 } // namespace
 
 GenerationResult generate_merge(const core::TemplatedStructure<Exact, 3>& x,
-                                const GenerationOptions& o) {
-  return merge_3(x, o);
+                                const GenerationOptions& o,
+                                const std::vector<core::RigidTransformation<Exact, 3>>& copies) {
+  return merge_3(x, o, copies);
 }
-GenerationResult generate_merge(const core::TemplatedStructure<support::LazyCyclotomic, 3>& x,
-                                const GenerationOptions& o) {
-  return merge_3(x, o);
+GenerationResult
+generate_merge(const core::TemplatedStructure<support::LazyCyclotomic, 3>& x,
+               const GenerationOptions& o,
+               const std::vector<core::RigidTransformation<support::LazyCyclotomic, 3>>& copies) {
+  return merge_3(x, o, copies);
 }
 
 } // namespace symmesh::gen

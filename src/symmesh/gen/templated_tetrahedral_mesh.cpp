@@ -481,7 +481,14 @@ GenerationResult generate_by_3(const core::TemplatedStructure<FT, 3>& x, Method 
     r.method = "combined";
     break;
   case Method::merge:
-    r = generate_merge(x, options);
+    // Slices of a rotation are merged copies 0 and 1 (merge_3 finds them); a group symmetry
+    // merges copy 0 only.
+    if (rotational_applies())
+      r = generate_merge(x, options);
+    else if (is_group(Symmetry::combined) || is_group(Symmetry::reflective))
+      r = generate_merge(x, options, group_copies);
+    else
+      r = generate_merge(x, options);
     r.method = "merge";
     break;
   case Method::conventional:
