@@ -420,18 +420,9 @@ GenerationResult merge_3(const core::TemplatedStructure<FT, 3>& x, const Generat
   }
   const double symmetry_seconds = seconds_since(t0_symmetry);
   stage("instance overlap (Eq. 4.2)", 0, "");
-  std::optional<core::OverlapWitness> overlap;
-  if (group) {
-    // Every overlap of a group's copies is the image of one with copy 0 (as in generate_3).
-    const auto near = support::copies_near_copy_zero(x);
-    overlap = core::find_instance_overlap(near.structure);
-    if (overlap) {
-      overlap->a.g = near.near[overlap->a.g];
-      overlap->b.g = near.near[overlap->b.g];
-    }
-  } else {
-    overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice);
-  }
+  const auto overlap =
+      group ? support::copy_zero_overlap(x)
+            : core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice);
   if (overlap) throw std::invalid_argument(core::overlap_message(*overlap));
   GenerationResult r;
   // The subdivision and the mappings say which faces meet; their classes are not used.

@@ -199,4 +199,17 @@ CopiesNearCopyZero<FT, D> copies_near_copy_zero(const core::TemplatedStructure<F
   return out;
 }
 
+/// Eq. 4.2 under a group of copies: every overlap is the image of one with copy 0, so only the
+/// copies near copy 0 are checked; the witness is named by x's own instance numbers.
+template <class FT, int D>
+std::optional<core::OverlapWitness> copy_zero_overlap(const core::TemplatedStructure<FT, D>& x) {
+  const auto near = copies_near_copy_zero(x);
+  auto overlap = core::find_instance_overlap(near.structure);
+  if (overlap) {
+    overlap->a.g = near.near[overlap->a.g];
+    overlap->b.g = near.near[overlap->b.g];
+  }
+  return overlap;
+}
+
 } // namespace symmesh::gen::support

@@ -344,19 +344,10 @@ GenerationResult generate_3(const core::TemplatedStructure<FT, 3>& x, const Gene
   const double symmetry_seconds = seconds_since(t0);
   const long symmetry_faults = minor_faults() - f0;
   stage("instance overlap (Eq. 4.2)", 0, "");
-  // A group of copies: every overlap is the image of one with copy 0 (copies_near_copy_zero);
-  // the witness is named by the structure's own instance numbers.
-  std::optional<core::OverlapWitness> overlap;
-  if (group) {
-    const auto near = support::copies_near_copy_zero(x);
-    overlap = core::find_instance_overlap(near.structure);
-    if (overlap) {
-      overlap->a.g = near.near[overlap->a.g];
-      overlap->b.g = near.near[overlap->b.g];
-    }
-  } else {
-    overlap = core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice);
-  }
+  // A group of copies: every overlap is the image of one with copy 0 (copy_zero_overlap).
+  const auto overlap =
+      group ? support::copy_zero_overlap(x)
+            : core::find_instance_overlap_by_slices(x, rotations, copy_zero_in_slice);
   if (overlap) throw std::invalid_argument(core::overlap_message(*overlap));
   const auto bpp = support::boundary_patch_stage(rotational || group ? two_copies : x, o,
                                                  symmetry_seconds, symmetry_faults, r);
