@@ -141,9 +141,12 @@ done
 
 # Technique 5.8 in 3D: the built-in 3D objects made Delaunay are conforming with the volume and
 # boundary area of the generated mesh, every interior triangle is locally Delaunay
-# (delaunay_check.py, exact), and the symmetric ones still map onto themselves.
+# (delaunay_check.py, exact), and the symmetric ones still map onto themselves. The half-slices
+# (a wedge of 180/n degrees between two mirror faces) need mirror points across the wedge's
+# bisector: with bisection alone the 64- and 128-TSV ones hit the refinement cap.
 for case in "cube-halves - -" "finfet 0 0" "tsv-8 8 1" "tsv-16 16 1" "tsv-32 32 1" "tsv-64 64 1" \
-            "tsv-128 128 1" "tsv-whole-8 - -" "multi-tsv - -"; do
+            "tsv-128 128 1" "tsv-whole-8 - -" "multi-tsv - -" "tsv-half-8 8 1" "tsv-half-16 16 1" \
+            "tsv-half-32 32 1" "tsv-half-64 64 1" "tsv-half-128 128 1"; do
   set -- $case
   name=$1
   "$BIN" example "$name" -o "$TMP/$name.json"

@@ -200,68 +200,83 @@ void split_site(Surface& surface, const Site& e, IndexType m) {
 
 } // namespace
 
-std::vector<std::vector<AcuteCrease>> acute_crease_edges(const Session& s) {
-  std::vector<std::vector<AcuteCrease>> out;
+std::vector<FacingPlanes> facing_planes(const Session& s) {
+  std::vector<FacingPlanes> out;
   for (const auto& w : s.w) {
     out.emplace_back();
-    std::map<std::pair<IndexType, IndexType>, std::vector<IndexType>> wings;
-    for (const auto& f : surface_of(w))
-      for (int k = 0; k < 3; ++k)
-        wings[std::minmax(f[std::size_t(k)], f[std::size_t((k + 1) % 3)])].push_back(
-            f[std::size_t((k + 2) % 3)]);
-    for (const auto& [e, angle] : dihedral_angle_sums(w)) {
-      if (!(angle < 60)) continue;
-      const auto it = wings.find(e);
-      if (it == wings.end() || it->second.size() != 2) continue;
-      const Vec a = at(w.p(e.first)), b = at(w.p(e.second));
-      const Vec along = unit(minus(b, a));
-      AcuteCrease c;
-      c.a = e.first;
-      c.b = e.second;
-      c.origin = a;
-      Vec leg[2];
-      for (int side = 0; side < 2; ++side) {
-        const Vec d = minus(at(w.p(it->second[std::size_t(side)])), a);
-        c.n[std::size_t(side)] = unit(cross3(minus(b, a), d));
-        const double h = dot3(d, along);
-        leg[side] = unit({d[0] - h * along[0], d[1] - h * along[1], d[2] - h * along[2]});
+    auto& fp = out.back();
+    fp.vertex_planes.resize(w.vertex_count());
+    if (w.vertex_count() == 0) continue;
+    Vec lo = at(w.p(0)), hi = lo;
+    for (std::size_t v = 0; v < w.vertex_count(); ++v)
+      for (std::size_t i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], w.p(IndexType(v))[i]);
+        hi[i] = std::max(hi[i], w.p(IndexType(v))[i]);
       }
-      c.bisector = unit(minus(leg[0], leg[1]));
-      if (dot3(c.bisector, c.bisector) == 0) continue;
-      out.back().push_back(c);
+    const Vec extent = minus(hi, lo);
+    fp.scale = std::sqrt(dot3(extent, extent));
+    // Boundary triangles with the cell's fourth vertex, for the outward normal.
+    std::map<Tri, std::vector<IndexType>> apex;
+    for (const auto& c : w.cells)
+      for (int k = 0; k < 4; ++k) {
+        Tri f{};
+        for (int i = 0, n = 0; i < 4; ++i)
+          if (i != k) f[std::size_t(n++)] = c[std::size_t(i)];
+        std::sort(f.begin(), f.end());
+        apex[f].push_back(c[std::size_t(k)]);
+      }
+    for (const auto& [f, e] : apex) {
+      if (e.size() != 1) continue;
+      Vec n = unit(cross3(sub3(w.p(f[1]), w.p(f[0])), sub3(w.p(f[2]), w.p(f[0]))));
+      if (dot3(n, sub3(w.p(e[0]), w.p(f[0]))) > 0) n = {-n[0], -n[1], -n[2]};
+      const double d = dot3(n, at(w.p(f[0])));
+      int id = -1;
+      for (std::size_t k = 0; k < fp.planes.size() && id < 0; ++k)
+        if (dot3(n, fp.planes[k].n) >= 1 - 1e-9 && std::abs(d - fp.planes[k].d) <= 1e-9 * fp.scale)
+          id = int(k);
+      if (id < 0) {
+        id = int(fp.planes.size());
+        fp.planes.push_back({n, d});
+      }
+      fp.triangle_plane[f] = id;
+      for (IndexType v : f) {
+        auto& list = fp.vertex_planes[std::size_t(v)];
+        if (std::find(list.begin(), list.end(), id) == list.end()) list.push_back(id);
+      }
     }
+    for (std::size_t i = 0; i < fp.planes.size(); ++i)
+      for (std::size_t j = i + 1; j < fp.planes.size(); ++j) {
+        const auto &a = fp.planes[i], &b = fp.planes[j];
+        const double cosine = dot3(a.n, b.n);
+        if (!(cosine < -0.5 && cosine > -1 + 1e-9)) continue;
+        const Vec diff = minus(a.n, b.n);
+        const double l = std::sqrt(dot3(diff, diff));
+        fp.mirrors[{int(i), int(j)}] = {{diff[0] / l, diff[1] / l, diff[2] / l}, (a.d - b.d) / l};
+      }
   }
   return out;
 }
 
-std::optional<std::array<double, 3>> crease_mirror(const Work& w,
-                                                   const std::vector<AcuteCrease>& creases,
-                                                   const std::array<const double*, 3>& x,
-                                                   IndexType q) {
-  const P3 a = p3(x[0]), b = p3(x[1]), c = p3(x[2]);
-  const P3 o = CGAL::circumcenter(a, b, c);
-  const double rho2 = CGAL::squared_distance(o, a);
-  const Vec normal = unit(cross3(sub3(x[1], x[0]), sub3(x[2], x[0])));
-  for (const auto& crease : creases)
-    for (std::size_t side = 0; side < 2; ++side) {
-      const Vec& n = crease.n[side];
-      const Vec& other = crease.n[1 - side];
-      if (std::abs(dot3(normal, n)) < 1 - 1e-9) continue;
-      bool on_leg = true;
-      for (const double* xi : x) {
-        const Vec d = minus(at(xi), crease.origin);
-        on_leg = on_leg && std::abs(dot3(d, n)) <= 1e-9 * std::sqrt(dot3(d, d) + rho2);
-      }
-      if (!on_leg) continue;
-      const Vec d = minus(at(w.p(q)), crease.origin);
-      const double lq = std::sqrt(dot3(d, d));
-      // On the other leg's plane and off the crease line (there it is its own mirror image).
-      if (std::abs(dot3(d, other)) > 1e-9 * lq || std::abs(dot3(d, n)) <= 1e-6 * lq) continue;
-      const double h = 2 * dot3(d, crease.bisector);
-      const Vec p{w.p(q)[0] - h * crease.bisector[0], w.p(q)[1] - h * crease.bisector[1],
-                  w.p(q)[2] - h * crease.bisector[2]};
-      if (CGAL::squared_distance(o, P3(p[0], p[1], p[2])) < rho2 * (1 - 1e-9)) return p;
-    }
+std::optional<std::array<double, 3>> crease_mirror(const Work& w, const FacingPlanes& planes,
+                                                   const std::array<IndexType, 3>& f, IndexType q) {
+  Tri key = f;
+  std::sort(key.begin(), key.end());
+  const auto it = planes.triangle_plane.find(key);
+  if (it == planes.triangle_plane.end()) return std::nullopt;
+  const int pf = it->second;
+  const auto& own = planes.planes[std::size_t(pf)];
+  const Vec x = at(w.p(q));
+  // On f's plane too: q is on the line where the planes meet, its own mirror image.
+  if (std::abs(dot3(own.n, x) - own.d) <= 1e-6 * planes.scale) return std::nullopt;
+  const P3 o = CGAL::circumcenter(p3(w.p(f[0])), p3(w.p(f[1])), p3(w.p(f[2])));
+  const double rho2 = CGAL::squared_distance(o, p3(w.p(f[0])));
+  for (int pq : planes.vertex_planes[std::size_t(q)]) {
+    const auto m = planes.mirrors.find(std::minmax(pf, pq));
+    if (m == planes.mirrors.end()) continue;
+    const double h = 2 * (dot3(m->second.m, x) - m->second.c);
+    const Vec p{x[0] - h * m->second.m[0], x[1] - h * m->second.m[1], x[2] - h * m->second.m[2]};
+    if (CGAL::squared_distance(o, P3(p[0], p[1], p[2])) < rho2 * (1 - 1e-9)) return p;
+  }
   return std::nullopt;
 }
 

@@ -1,13 +1,13 @@
-/// Mirror insertion at acute creases: Technique 5.8's protection in 3D below 45° (Section 5.2.5,
-/// Figure 5.17) — spec/adaptation.md#tmesh-adaptation.
+/// Mirror insertion at acute creases and thin parts: Technique 5.8's protection in 3D below 45°
+/// (Section 5.2.5, Figure 5.17) — spec/adaptation.md#tmesh-adaptation.
 ///
-/// Two boundary planes P1, P2 of a template that meet along a crease line L with a small dihedral
-/// angle encroach on each other: bisection near L shrinks both sides in turn without end. Let M
-/// be the reflection in the bisector plane B of the crease (it swaps the two half-planes). For a
-/// triangle T in P1 with diametral sphere S (centre o in P1), the power of a point q with
-/// respect to S and to M(S) differs by |q - o|^2 - |q - M(o)|^2, which is linear in q, zero on
-/// B and positive on M(o)'s side. So a point q of P2 on that side inside S lies strictly inside
-/// M(S), i.e. M(q) lies strictly inside T's circumcircle in P1. Inserting M(q) into P1 is a
+/// Two boundary planes P1, P2 of a template that meet along a line L with a small dihedral angle
+/// (or are parallel and close) encroach on each other: bisection near L shrinks both sides in turn
+/// without end. Let M be the reflection in the bisector plane B of the crease (it swaps the two
+/// half-planes). For a triangle T in P1 with diametral sphere S (centre o in P1), the power of a
+/// point q with respect to S and to M(S) differs by |q - o|^2 - |q - M(o)|^2, which is linear in q,
+/// zero on B and positive on M(o)'s side. So a point q of P2 on that side inside S lies strictly
+/// inside M(S), i.e. M(q) lies strictly inside T's circumcircle in P1. Inserting M(q) into P1 is a
 /// Bowyer–Watson insertion that destroys T, and the points it adds are mirror images of points
 /// already there: once the vertex sets of the two legs near L are mirror images and each leg is
 /// a planar Delaunay triangulation, no leg triangle's diametral ball holds a point of the other
@@ -17,32 +17,45 @@
 #include "symmesh/adapt/adaptation_work.h"
 
 #include <array>
+#include <map>
 #include <optional>
 #include <vector>
 
 namespace symmesh::adapt::work {
 
-/// An acute crease of a template: boundary edge {a, b} where the template's cells meet with a
-/// dihedral angle sum below 60° (the protection threshold of acute_corners), the unit normals of
-/// the planes of its two boundary triangles, and the unit normal of the bisector plane through
-/// the crease whose reflection swaps the two half-planes.
-struct AcuteCrease {
-  IndexType a = -1, b = -1;
-  std::array<double, 3> origin{};           ///< the position of a
-  std::array<std::array<double, 3>, 2> n{}; ///< the two leg planes
-  std::array<double, 3> bisector{};
+/// The planes of a template's boundary (boundary triangles clustered by outward unit normal and
+/// offset, up to 1e-9 of the template's extent) and the pairs of them that face each other: the
+/// outward normals n1, n2 with -1 < n1 . n2 < -1/2, i.e. the template lies in a wedge of less
+/// than 60° between them (an acute crease, or a thin wedge such as a half-slice of a TSV, whose
+/// mirror faces meet at the axis beyond the via). For each such pair, the reflection in the plane
+/// m . x = c with m = (n1 - n2) / |n1 - n2| swaps the two planes (their bisector). Parallel
+/// planes (n1 . n2 = -1 up to 1e-9: the faces of a thin layer, top and bottom) are left to
+/// bisection: mirroring across their mid-plane carried points from layer to layer of the TSV
+/// liners (related faces face the next layer), and the 8-TSV slice hit the refinement cap.
+struct FacingPlanes {
+  struct Plane {
+    std::array<double, 3> n{}; ///< outward unit normal
+    double d = 0;              ///< n . x = d
+  };
+  struct Mirror {
+    std::array<double, 3> m{};
+    double c = 0;
+  };
+  double scale = 1; ///< the template's extent
+  std::vector<Plane> planes;
+  std::map<std::array<IndexType, 3>, int> triangle_plane; ///< by sorted vertices
+  std::vector<std::vector<int>> vertex_planes;            ///< the planes of a vertex's triangles
+  std::map<std::pair<int, int>, Mirror> mirrors;          ///< facing pairs (i < j)
 };
 
-/// The acute creases of every template.
-std::vector<std::vector<AcuteCrease>> acute_crease_edges(const Session& s);
+/// The boundary planes and facing pairs of every template.
+std::vector<FacingPlanes> facing_planes(const Session& s);
 
-/// The mirror of boundary vertex q of w onto the plane of triangle (x0, x1, x2) of w's boundary,
-/// when that triangle lies on one leg plane of an acute crease of w and q on the other, off the
-/// crease line, and the mirror lies strictly inside the triangle's circumcircle.
-std::optional<std::array<double, 3>> crease_mirror(const Work& w,
-                                                   const std::vector<AcuteCrease>& creases,
-                                                   const std::array<const double*, 3>& x,
-                                                   IndexType q);
+/// The mirror image of boundary vertex q of w onto the plane of boundary triangle f of w, when q
+/// lies on a plane that faces f's (FacingPlanes), not on f's plane itself, and the image lies
+/// strictly inside f's circumcircle.
+std::optional<std::array<double, 3>> crease_mirror(const Work& w, const FacingPlanes& planes,
+                                                   const std::array<IndexType, 3>& f, IndexType q);
 
 /// A point to insert on the boundary of template t, in the plane with unit normal `normal`.
 struct BoundaryPoint {

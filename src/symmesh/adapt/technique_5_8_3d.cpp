@@ -233,16 +233,15 @@ std::array<double, 3> unit_normal(const double* a, const double* b, const double
 /// them in) of boundary triangle f of t, and their indices in `out` into `used`.
 using SeenMirrors = std::map<std::tuple<std::size_t, double, double, double>, std::size_t>;
 template <class Image>
-void mirror_encroaching(const Session& s, const std::vector<std::vector<AcuteCrease>>& creases,
-                        std::size_t t, const std::array<IndexType, 3>& f,
-                        const std::vector<IndexType>& near, const P3& o, double rho2, Image&& image,
-                        SeenMirrors& seen, std::vector<BoundaryPoint>& out,
-                        std::vector<std::size_t>& used) {
+void mirror_encroaching(const Session& s, const std::vector<FacingPlanes>& creases, std::size_t t,
+                        const std::array<IndexType, 3>& f, const std::vector<IndexType>& near,
+                        const P3& o, double rho2, Image&& image, SeenMirrors& seen,
+                        std::vector<BoundaryPoint>& out, std::vector<std::size_t>& used) {
   const auto& w = s.w[t];
-  if (creases[t].empty()) return;
+  if (creases[t].mirrors.empty()) return;
   for (IndexType q : near) {
     if (!(CGAL::squared_distance(o, image(q)) < rho2)) continue;
-    const auto p = crease_mirror(w, creases[t], {w.p(f[0]), w.p(f[1]), w.p(f[2])}, q);
+    const auto p = crease_mirror(w, creases[t], f, q);
     if (!p) continue;
     const auto [it, fresh] = seen.emplace(std::tuple{t, (*p)[0], (*p)[1], (*p)[2]}, out.size());
     if (fresh) out.push_back({t, *p, unit_normal(w.p(f[0]), w.p(f[1]), w.p(f[2]))});
@@ -258,7 +257,7 @@ void mirror_encroaching(const Session& s, const std::vector<std::vector<AcuteCre
 /// face, the constrained Delaunay tetrahedralization of a template is Delaunay.
 Encroached encroached_boundary(const Session& s, const Round3& r,
                                const std::vector<TableIndex>& index,
-                               const std::vector<std::vector<AcuteCrease>>& creases) {
+                               const std::vector<FacingPlanes>& creases) {
   std::set<TemplateEdge> bad;
   Encroached out;
   SeenMirrors seen;
@@ -784,10 +783,8 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
     std::vector<std::pair<TemplateEdge, std::vector<std::size_t>>> fallback;
     {
       const Round3 r(s);
-      auto e =
-          encroached_boundary(s, r, index,
-                              crease_mirrors ? acute_crease_edges(s)
-                                             : std::vector<std::vector<AcuteCrease>>(s.w.size()));
+      auto e = encroached_boundary(
+          s, r, index, crease_mirrors ? facing_planes(s) : std::vector<FacingPlanes>(s.w.size()));
       bad = std::move(e.edges);
       mirrors = std::move(e.mirrors);
       fallback = std::move(e.fallback);
