@@ -4,23 +4,28 @@
 // round re-tetrahedralizes the templates with TetGen, too slow for that harness's budget); this
 // harness is about it alone.
 //
-// Bytes 0-5 choose the geometry as the 3D Technique 5.8 property does
-// (proofs-checks/technique_5_8_make_delaunay.cpp, box_inputs.h): a grid of boxes, one template
-// instanced by translations or with every odd column mirrored in x, or a block on a base slab
-// (two templates, a T-junction of the boundary patches, not convex). Right angles only, so no
-// acute input angle. Every further 3 bytes are one operation before Technique 5.8: a bisection of
-// one template edge (with its related edges) or smoothing sweeps (boundary vertices too, moved
-// with their related copies); inputs that grow a mesh past 400 template cells stop there. Then
-// Technique 5.8 runs with its round cap of 32.
+// Bytes 0-5 choose the geometry as the 3D Technique 5.8 properties do
+// (proofs-checks/technique_5_8_make_delaunay.cpp, box_inputs.h, acute_prism.h): with bit 2 of
+// byte 0 clear, a grid of boxes, one template instanced by translations or with every odd column
+// mirrored in x, or a block on a base slab (two templates, a T-junction of the boundary patches,
+// not convex), right angles only; with it set, a triangular prism with an acute crease of 1-59
+// degrees between its legs (second leg 0.3-1.5), alone or mirrored across its first leg, refined
+// 0-2 times — the input of Technique 5.8's crease mirroring. Every further 3 bytes are one
+// operation before Technique 5.8: a bisection of one template edge (with its related edges) or
+// smoothing sweeps (boundary vertices too, moved with their related copies); inputs that grow a
+// mesh past 400 template cells stop there. Then Technique 5.8 runs with its round cap of 32.
 //
 // After every operation: the compact SVB is valid, the conformity certificate holds with AT's
 // boundary area unchanged, and AT's volume is exactly the boxes' (the doubles taken as
-// rationals). After Technique 5.8: also every interior triangle of AT is locally Delaunay by
-// exact in-sphere signs with no allowance (every instance matrix is a signed permutation, so the
-// library resolves every tie) and no triangle lies in three cells (exact_delaunay_verdict).
+// rationals; a prism's within 1e-12 of it: its slanted leg is rounded). After Technique 5.8:
+// also every interior triangle of AT is locally Delaunay by exact in-sphere signs with no
+// allowance for boxes (every instance matrix is a signed permutation, so the library resolves
+// every tie), up to ties by rounding (|D| / L^5 <= 1e-9) for prisms (mirror points across a
+// slanted bisector are rounded), and no triangle lies in three cells (exact_delaunay_verdict).
 // AdaptationLimit (the round cap, or a facet Technique 5.8 cannot make locally Delaunay: its
 // documented clear error) is a refusal, not a finding; any other exception, a failed check, a
 // crash or a hang is a finding.
+#include "proofs-checks/acute_prism.h"
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/exact_delaunay_verdict.h"
 #include "symmesh/api/generate_run.h"
@@ -29,6 +34,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -57,7 +63,20 @@ struct Seed {
   TemplatedMeshCompactSvb mesh;
   double boundary = 0;
   mpq_class volume;
+  bool exact = true; ///< boxes: the volume and the Delaunay verdict are exact
 };
+
+/// The prism from bytes 1-4 (byte 0 has bit 2 set).
+Seed prism_of(const std::uint8_t* b) {
+  const symmesh::proofs::AcutePrism p{1 + b[1] % 59, (3 + b[2] % 13) / 10.0, bool(b[3] & 1),
+                                      b[4] % 3};
+  Seed s;
+  s.mesh = p.build();
+  s.boundary = symmesh::adapt::certify_conformity(s.mesh).boundary_measure;
+  s.volume = symmesh::proofs::boxes::exact_measure(s.mesh);
+  s.exact = false;
+  return s;
+}
 
 /// The generated mesh of a geometry, made once: generation (TetGen under the sanitizers) costs as
 /// much as the rest of an input, and the bytes allow a few thousand geometries only. Null when
@@ -84,7 +103,10 @@ const Seed* seed_of(const BoxInput& in) {
 void check(const TemplatedMeshCompactSvb& t, const Seed& s) {
   if (!t.is_valid()) __builtin_trap();
   if (!symmesh::adapt::certify_conformity(t, s.boundary).holds) __builtin_trap();
-  if (symmesh::proofs::boxes::exact_measure(t) != s.volume) __builtin_trap();
+  const mpq_class v = symmesh::proofs::boxes::exact_measure(t);
+  if (s.exact ? v != s.volume
+              : std::abs(mpq_class(v - s.volume).get_d()) > 1e-12 * s.volume.get_d())
+    __builtin_trap();
 }
 
 std::size_t template_cells(const TemplatedMeshCompactSvb& t) {
@@ -112,7 +134,10 @@ void apply(TemplatedMeshCompactSvb& t, const std::uint8_t* op) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 6 || size > 6 + 3 * 6) return 0; // at most six operations: each input stays fast
-  const auto* seed = seed_of(geometry_of(data));
+  Seed prism;
+  const bool is_prism = data[0] & 4;
+  if (is_prism) prism = prism_of(data);
+  const auto* seed = is_prism ? &prism : seed_of(geometry_of(data));
   if (!seed) return 0;
   const auto& s = *seed;
   auto t = s.mesh;
@@ -127,7 +152,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   check(t, s);
   const auto verdict = symmesh::proofs::exact_delaunay_verdict(t);
-  if (verdict.overfull != 0 || verdict.not_locally_delaunay != 0) __builtin_trap();
-  if (verdict.volume != s.volume) __builtin_trap();
+  if (verdict.overfull != 0 || (s.exact ? verdict.not_locally_delaunay : verdict.beyond_rounding))
+    __builtin_trap();
+  if (s.exact && verdict.volume != s.volume) __builtin_trap();
   return 0;
 }

@@ -32,6 +32,7 @@
 // legs keep encroaching on each other and the refinement cap or the round cap ends it
 // (AdaptationLimit).
 #include "proofs-checks/adaptation_support.h"
+#include "proofs-checks/acute_prism.h"
 #include "proofs-checks/box_inputs.h"
 #include "proofs-checks/exact_delaunay_verdict.h"
 #include "proofs-checks/registry.h"
@@ -149,58 +150,7 @@ void delaunay_after_technique_5_8_3d(const BoxInput& g, bool boundary_insertions
       no_picture);
 }
 
-/// A triangular prism template, its crease of `degrees` between the legs y = 0 (length 1) and
-/// the one at that angle (length `leg`), height 1; alone or with its mirror image across y = 0.
-struct AcutePrism {
-  int degrees = 10;
-  double leg = 0.7;
-  bool mirrored = false;
-  int refinements = 0;
-
-  std::string description() const {
-    return "prism, " + std::to_string(degrees) + "-degree crease, leg " + std::to_string(leg) +
-           (mirrored ? ", mirrored across y = 0" : "") + ", " + std::to_string(refinements) +
-           " refinements";
-  }
-  mesh::TemplatedMeshCompactSvb build() const {
-    const double a = degrees * 3.14159265358979323846 / 180;
-    mesh::TemplatedMeshCompactSvb t;
-    t.templated.point_dimension = 3;
-    mesh::MeshTemplate m;
-    m.mesh.point_dimension = 3;
-    const double c = leg * std::cos(a), sn = leg * std::sin(a);
-    const double v[6][3] = {{0, 0, 0}, {1, 0, 0}, {c, sn, 0}, {0, 0, 1}, {1, 0, 1}, {c, sn, 1}};
-    for (const auto& q : v) m.mesh.add_vertex(q);
-    for (std::array<mesh::IndexType, 4> cell :
-         {std::array<mesh::IndexType, 4>{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}}) {
-      double e[3][3];
-      for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < 3; ++i) e[k][i] = v[cell[std::size_t(k + 1)]][i] - v[cell[0]][i];
-      const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                         e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-      if (det < 0) std::swap(cell[2], cell[3]);
-      m.mesh.add_cell(mesh::ElementType::tetrahedron, cell.data());
-    }
-    t.templated.transformations.push_back({{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}});
-    m.transformation_indices.push_back(0);
-    m.region_ids.push_back(1);
-    if (mirrored) {
-      t.templated.transformations.push_back({{1, 0, 0, 0, -1, 0, 0, 0, 1}, {0, 0, 0}});
-      m.transformation_indices.push_back(1);
-      m.region_ids.push_back(1);
-      t.tables.push_back({0, 0, {{0, 0}, {1, 1}, {3, 3}, {4, 4}}});
-      t.identifications.push_back({0, 1, 0});
-    }
-    t.templated.templates.push_back(std::move(m));
-    adapt::expand_identifications(t);
-    for (int k = 0; k < refinements; ++k)
-      adapt::refine_where(t, [](const adapt::CellView&) { return true; });
-    return t;
-  }
-};
-
-rc::Gen<AcutePrism> acute_prism(int lowest, int highest) {
+rc::Gen<AcutePrism> acute_prism_in(int lowest, int highest) {
   return rc::gen::apply(
       [](int degrees, int leg_tenths, bool mirrored, int refinements) {
         return AcutePrism{degrees, leg_tenths / 10.0, mirrored, refinements};
@@ -291,11 +241,11 @@ void register_technique_5_8(std::vector<Property>& p) {
                "|D|/L^5 <= 1e-9, allowed)",
                [] {
                  return rc::detail::toProperty(
-                     [] { delaunay_at_acute_crease(*acute_prism(3, 44), true); });
+                     [] { delaunay_at_acute_crease(*acute_prism_in(3, 44), true); });
                },
                [] {
                  return rc::detail::toProperty(
-                     [] { delaunay_at_acute_crease(*acute_prism(3, 10), false); });
+                     [] { delaunay_at_acute_crease(*acute_prism_in(3, 10), false); });
                }});
 }
 
