@@ -1,6 +1,6 @@
-// Mirror insertion at acute creases and boundary-facet insertion for Technique 5.8 in 3D —
-// spec/adaptation.md#tmesh-adaptation (crease_mirroring_3d.h explains why mirroring ends the
-// ping-pong encroachment that bisection does not).
+// Mirror insertion between facing boundary planes (acute creases, thin wedges) and boundary-facet
+// insertion for Technique 5.8 in 3D — spec/adaptation.md#tmesh-adaptation (crease_mirroring_3d.h
+// explains why mirroring ends the ping-pong encroachment that bisection does not).
 #include "symmesh/adapt/crease_mirroring_3d.h"
 
 #include <algorithm>

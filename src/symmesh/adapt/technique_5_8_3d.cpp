@@ -211,7 +211,8 @@ bool delaunay_face(const P3& a, const P3& b, const P3& c, const std::vector<P3>&
 }
 
 /// What the encroachment step does next: edges to bisect, and points to insert on template
-/// boundary triangles (mirror images across acute creases, crease_mirroring_3d.h), each triangle
+/// boundary triangles (mirror images across the bisector of two facing planes: an acute crease or
+/// a thin wedge, crease_mirroring_3d.h), each triangle
 /// they resolve with the edge to bisect instead when none of its mirror points can be inserted
 /// (it falls outside the leg, or onto a vertex).
 struct Encroached {
@@ -228,20 +229,20 @@ std::array<double, 3> unit_normal(const double* a, const double* b, const double
   return n;
 }
 
-/// Collects the mirror images, across an acute crease of template t, of the vertices `near` of
-/// t inside the diametral ball (centre o, squared radius rho2, in the coordinates `image` puts
-/// them in) of boundary triangle f of t, and their indices in `out` into `used`.
+/// Collects the mirror images, across the bisector of facing planes of template t, of the vertices
+/// `near` of t inside the diametral ball (centre o, squared radius rho2, in the coordinates `image`
+/// puts them in) of boundary triangle f of t, and their indices in `out` into `used`.
 using SeenMirrors = std::map<std::tuple<std::size_t, double, double, double>, std::size_t>;
 template <class Image>
-void mirror_encroaching(const Session& s, const std::vector<FacingPlanes>& creases, std::size_t t,
+void mirror_encroaching(const Session& s, const std::vector<FacingPlanes>& facing, std::size_t t,
                         const std::array<IndexType, 3>& f, const std::vector<IndexType>& near,
                         const P3& o, double rho2, Image&& image, SeenMirrors& seen,
                         std::vector<BoundaryPoint>& out, std::vector<std::size_t>& used) {
   const auto& w = s.w[t];
-  if (creases[t].mirrors.empty()) return;
+  if (facing[t].mirrors.empty()) return;
   for (IndexType q : near) {
     if (!(CGAL::squared_distance(o, image(q)) < rho2)) continue;
-    const auto p = crease_mirror(w, creases[t], f, q);
+    const auto p = crease_mirror(w, facing[t], f, q);
     if (!p) continue;
     const auto [it, fresh] = seen.emplace(std::tuple{t, (*p)[0], (*p)[1], (*p)[2]}, out.size());
     if (fresh) out.push_back({t, *p, unit_normal(w.p(f[0]), w.p(f[1]), w.p(f[2]))});
@@ -252,12 +253,12 @@ void mirror_encroaching(const Session& s, const std::vector<FacingPlanes>& creas
 /// Technique 5.8, step "boundary facets Delaunay": the template boundary triangles that are no
 /// Delaunay face (delaunay_face) of the vertices near them — of their own template, and, for an
 /// interface triangle, of the instance across it too (AT's coordinates). Each is resolved by the
-/// mirror images of the points of the other leg of an acute crease that encroach on it, where
-/// there are such points, else by bisecting an edge. With every boundary triangle a Delaunay
+/// mirror images of the encroaching points that lie on a plane facing its own, where there are
+/// such points, else by bisecting an edge. With every boundary triangle a Delaunay
 /// face, the constrained Delaunay tetrahedralization of a template is Delaunay.
 Encroached encroached_boundary(const Session& s, const Round3& r,
                                const std::vector<TableIndex>& index,
-                               const std::vector<FacingPlanes>& creases) {
+                               const std::vector<FacingPlanes>& facing) {
   std::set<TemplateEdge> bad;
   Encroached out;
   SeenMirrors seen;
@@ -283,7 +284,7 @@ Encroached encroached_boundary(const Session& s, const Round3& r,
       if (delaunay_face(a, b, c, near, by)) continue;
       used.clear();
       mirror_encroaching(
-          s, creases, t, f, near_i, o, rho2, [&](IndexType q) { return p3(w.p(q)); }, seen,
+          s, facing, t, f, near_i, o, rho2, [&](IndexType q) { return p3(w.p(q)); }, seen,
           out.mirrors, used);
       if (used.empty())
         bad.insert(edge_to_split(w, t, f, {a, b, c}, *by));
@@ -321,13 +322,14 @@ Encroached encroached_boundary(const Session& s, const Round3& r,
         });
         std::optional<P3> by;
         if (delaunay_face(a, b, c, near, by)) return;
-        // A crease of either template: the mirror goes into that template's copy of the triangle.
+        // Facing planes of either template: the mirror goes into that template's copy of the
+        // triangle.
         used.clear();
         mirror_encroaching(
-            s, creases, ti, f, near_i, o, rho2, [&](IndexType q) { return image3(s, i, q); }, seen,
+            s, facing, ti, f, near_i, o, rho2, [&](IndexType q) { return image3(s, i, q); }, seen,
             out.mirrors, used);
         mirror_encroaching(
-            s, creases, tj, g, near_j, o, rho2, [&](IndexType q) { return image3(s, j, q); }, seen,
+            s, facing, tj, g, near_j, o, rho2, [&](IndexType q) { return image3(s, j, q); }, seen,
             out.mirrors, used);
         if (used.empty())
           bad.insert(edge_to_split(s.w[ti], ti, f, {a, b, c}, *by));
@@ -760,8 +762,9 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
   const auto limit = [&](const std::string& what) {
     s.store();
     throw AdaptationLimit("Technique 5.8 in 3D: " + what +
-                          " (ping-pong encroachment, Figure 5.17: mirror points end it at acute "
-                          "creases between two planar legs, not at other sharp features)");
+                          " (ping-pong encroachment, Figure 5.17: mirror points end it between two "
+                          "facing planes, at acute creases and thin wedges, not at other sharp "
+                          "features)");
   };
   const auto cell_count = [&] {
     std::size_t n = 0;
