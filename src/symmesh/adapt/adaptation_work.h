@@ -131,6 +131,15 @@ struct TableIndex {
 };
 std::vector<TableIndex> index_tables(const mesh::TemplatedMeshCompactSvb& t);
 
+/// One table read from template `from`'s side: `map` sends its vertices to template `to`'s.
+struct TableView {
+  const std::unordered_map<IndexType, IndexType>* map = nullptr;
+  std::size_t to = 0;
+};
+/// Every table, either way, that starts at template t: the steps of a closure under the tables.
+std::vector<TableView> tables_from(const Session& s, const std::vector<TableIndex>& index,
+                                   std::size_t t);
+
 /// A condition on a new cell (sliver removal: positive in every instance).
 using CellTest = std::function<bool(const Cell&)>;
 

@@ -154,27 +154,24 @@ std::vector<Site> related_sites(const Session& s, const std::vector<TableIndex>&
   std::vector<Site> out{root};
   std::set<std::pair<std::size_t, Tri>> seen{root.key()};
   for (std::size_t next = 0; next < out.size(); ++next)
-    for (std::size_t k = 0; k < s.t.tables.size(); ++k)
-      for (bool forward : {true, false}) {
-        const Site e = out[next];
-        const auto& table = s.t.tables[k];
-        if (std::size_t(forward ? table.from_template : table.to_template) != e.t) continue;
-        const auto& map = forward ? index[k].fwd : index[k].bwd;
-        Site r = e;
-        r.t = std::size_t(forward ? table.to_template : table.from_template);
-        bool all = true;
-        for (int i = 0; i < e.size() && all; ++i) {
-          const auto it = map.find(e.v[std::size_t(i)]);
-          all = it != map.end();
-          if (all) r.v[std::size_t(i)] = it->second;
-        }
-        if (!all) continue;
-        const auto& other = surfaces[r.t];
-        if (r.size() == 3 ? !other.tris.count(tri(r.v[0], r.v[1], r.v[2]))
-                          : !other.has_edge(r.v[0], r.v[1]))
-          continue;
-        if (seen.insert(r.key()).second) out.push_back(r);
+    for (const auto& [map_of, to] : tables_from(s, index, out[next].t)) {
+      const Site e = out[next];
+      const auto& map = *map_of;
+      Site r = e;
+      r.t = to;
+      bool all = true;
+      for (int i = 0; i < e.size() && all; ++i) {
+        const auto it = map.find(e.v[std::size_t(i)]);
+        all = it != map.end();
+        if (all) r.v[std::size_t(i)] = it->second;
       }
+      if (!all) continue;
+      const auto& other = surfaces[r.t];
+      if (r.size() == 3 ? !other.tris.count(tri(r.v[0], r.v[1], r.v[2]))
+                        : !other.has_edge(r.v[0], r.v[1]))
+        continue;
+      if (seen.insert(r.key()).second) out.push_back(r);
+    }
   return out;
 }
 

@@ -174,6 +174,19 @@ std::vector<TableIndex> index_tables(const mesh::TemplatedMeshCompactSvb& t) {
   return out;
 }
 
+std::vector<TableView> tables_from(const Session& s, const std::vector<TableIndex>& index,
+                                   std::size_t t) {
+  std::vector<TableView> out;
+  for (std::size_t k = 0; k < s.t.tables.size(); ++k)
+    for (bool forward : {true, false}) {
+      const auto& table = s.t.tables[k];
+      if (std::size_t(forward ? table.from_template : table.to_template) != t) continue;
+      out.push_back({forward ? &index[k].fwd : &index[k].bwd,
+                     std::size_t(forward ? table.to_template : table.from_template)});
+    }
+  return out;
+}
+
 TemplateEdge edge_of(std::size_t t, IndexType a, IndexType b) {
   return {t, std::min(a, b), std::max(a, b)};
 }
@@ -807,33 +820,29 @@ bool plan_sliding_move(const Session& s, const std::vector<TableIndex>& index,
   if (!link_copies) return true;
   seen[{t, v}] = 0;
   for (std::size_t next = 0; next < out.size(); ++next) {
-    for (std::size_t k = 0; k < s.t.tables.size(); ++k)
-      for (bool forward : {true, false}) {
-        const SlidingMove m = out[next];
-        const auto& table = s.t.tables[k];
-        if (std::size_t(forward ? table.from_template : table.to_template) != m.t) continue;
-        const auto& map = forward ? index[k].fwd : index[k].bwd;
-        const auto iv = map.find(m.v);
-        if (iv == map.end()) continue;
-        const auto other = std::size_t(forward ? table.to_template : table.from_template);
-        std::vector<IndexType> mapped;
-        for (IndexType u : m.link) {
-          const auto iu = map.find(u);
-          if (iu == map.end()) return false;
-          mapped.push_back(iu->second);
-        }
-        std::sort(mapped.begin(), mapped.end());
-        const auto found = seen.find({other, iv->second});
-        if (found != seen.end()) {
-          if (out[found->second].link != mapped) return false;
-          continue;
-        }
-        const auto there =
-            sliding_link(s.w[other], bfacets[other][std::size_t(iv->second)], iv->second, tol);
-        if (there.link != mapped) return false;
-        seen[{other, iv->second}] = out.size();
-        out.push_back({other, iv->second, mapped, there.rounded});
+    for (const auto& [map_of, other] : tables_from(s, index, out[next].t)) {
+      const SlidingMove m = out[next];
+      const auto& map = *map_of;
+      const auto iv = map.find(m.v);
+      if (iv == map.end()) continue;
+      std::vector<IndexType> mapped;
+      for (IndexType u : m.link) {
+        const auto iu = map.find(u);
+        if (iu == map.end()) return false;
+        mapped.push_back(iu->second);
       }
+      std::sort(mapped.begin(), mapped.end());
+      const auto found = seen.find({other, iv->second});
+      if (found != seen.end()) {
+        if (out[found->second].link != mapped) return false;
+        continue;
+      }
+      const auto there =
+          sliding_link(s.w[other], bfacets[other][std::size_t(iv->second)], iv->second, tol);
+      if (there.link != mapped) return false;
+      seen[{other, iv->second}] = out.size();
+      out.push_back({other, iv->second, mapped, there.rounded});
+    }
   }
   return true;
 }
