@@ -576,7 +576,8 @@ VertexMovement<FT, D> valid_vertex_movement(const BoundaryPatchPartition<FT, D>&
 #define SYMMESH_BPP_INSTANTIATE(FT, D)                                                             \
   template std::vector<TemplateBoundaryMapping<FT, D>> template_boundary_mappings<FT, D>(          \
       const TemplatedStructure<FT, D>&, bool,                                                      \
-      const std::function<void(std::size_t, std::size_t)>&);                                       \
+      const std::function<void(std::size_t, std::size_t)>&,                                        \
+      const std::function<bool(InstanceId, InstanceId)>&);                                         \
   template BoundaryPatchPartition<FT, D> boundary_patch_partition<FT, D>(                          \
       const TemplatedStructure<FT, D>&, const BppOptions&);                                        \
   template struct BoundaryPatchPartition<FT, D>;                                                   \

@@ -73,10 +73,14 @@ struct TemplateBoundaryMapping {
 /// deterministically. \pre x.is_well_formed() (checked unless `check_well_formed` is false:
 /// the caller has checked it) and no two instances overlap (Eq. 4.2). `on_progress(done, total)`,
 /// when given, is called after each candidate pair of instances (boxes overlap) is decided.
+/// `wanted(a, b)`, when given, restricts the list to the pairs it accepts (either order): a
+/// caller that needs only some interfaces, e.g. those of one copy under a group, is spared the
+/// exact interface decisions of the others; the list is then closed under inverses still.
 template <class FT, int D>
 std::vector<TemplateBoundaryMapping<FT, D>>
 template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed = true,
-                           const std::function<void(std::size_t, std::size_t)>& on_progress = {});
+                           const std::function<void(std::size_t, std::size_t)>& on_progress = {},
+                           const std::function<bool(InstanceId, InstanceId)>& wanted = {});
 
 /// A composition of template boundary mappings (Def A.2): letters[0] is applied first. The
 /// rigid map is the product of the letters' maps; its domain is the set of points on which every

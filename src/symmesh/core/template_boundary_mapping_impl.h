@@ -422,7 +422,8 @@ std::vector<EnclosingBox<FT, D>> facet_enclosures(const std::vector<PointVec<FT,
 template <class FT, int D>
 std::vector<TemplateBoundaryMapping<FT, D>>
 template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_formed,
-                           const std::function<void(std::size_t, std::size_t)>& on_progress) {
+                           const std::function<void(std::size_t, std::size_t)>& on_progress,
+                           const std::function<bool(InstanceId, InstanceId)>& wanted) {
   std::ostringstream why;
   if (check_well_formed && !x.is_well_formed(&why)) throw std::invalid_argument(why.str());
   std::vector<TemplateBoundaryMapping<FT, D>> out;
@@ -455,7 +456,7 @@ template_boundary_mappings(const TemplatedStructure<FT, D>& x, bool check_well_f
   // some two boundary facets meet; this avoids the cell-pair tests of neighbouring_instances.
   std::vector<std::pair<std::size_t, std::size_t>> candidates;
   for_each_overlapping_box_pair(instance_box, [&](std::size_t a, std::size_t b) {
-    candidates.emplace_back(a, b);
+    if (!wanted || wanted(ids[a], ids[b])) candidates.emplace_back(a, b);
     return true;
   });
   std::sort(candidates.begin(), candidates.end());

@@ -10,6 +10,7 @@
 #include "symmesh/core/rigid_transformation.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -164,10 +165,12 @@ inline std::string overlap_message(const OverlapWitness& o) {
 /// ((i,0), (j,l-k)) and ((i,0), (j,l)) onto ((j,0), (i,n-l)), and keeps meeting interiors
 /// (spec/lemmas.md#lemma-4-2-rotational).
 /// \pre with rotation_copies = n > 0: every template has the n instances T_{i,k} = R^k ∘ T_{i,0}
-/// for one rotation R of order n (checked by the caller)
+/// for one rotation R of order n (checked by the caller). `wanted(a, b)`, when given, decides
+/// only the pairs it accepts (the caller knows the others are images of accepted ones).
 template <class FT, int D>
-std::optional<OverlapWitness> find_instance_overlap(const TemplatedStructure<FT, D>& x,
-                                                    std::size_t rotation_copies = 0) {
+std::optional<OverlapWitness>
+find_instance_overlap(const TemplatedStructure<FT, D>& x, std::size_t rotation_copies = 0,
+                      const std::function<bool(InstanceId, InstanceId)>& wanted = {}) {
   const auto ids = x.instance_ids();
   std::vector<ElementComplex<FT, D>> inst;
   std::vector<Box<FT, D>> boxes;
@@ -183,6 +186,7 @@ std::optional<OverlapWitness> find_instance_overlap(const TemplatedStructure<FT,
       const auto half = [&](std::size_t c) { return 2 * ids[c].g <= rotation_copies; };
       if (!((ids[a].g == 0 && half(b)) || (ids[b].g == 0 && half(a)))) return true;
     }
+    if (wanted && !wanted(ids[a], ids[b])) return true;
     const auto ca = inst[a].cells();
     const auto cb = inst[b].cells();
     for (const auto& s : ca) {

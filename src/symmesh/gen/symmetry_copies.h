@@ -204,7 +204,11 @@ CopiesNearCopyZero<FT, D> copies_near_copy_zero(const core::TemplatedStructure<F
 template <class FT, int D>
 std::optional<core::OverlapWitness> copy_zero_overlap(const core::TemplatedStructure<FT, D>& x) {
   const auto near = copies_near_copy_zero(x);
-  auto overlap = core::find_instance_overlap(near.structure);
+  // Pairs of two other copies are images of pairs with copy 0, which are decided.
+  const auto with_copy_zero = [](core::InstanceId a, core::InstanceId b) {
+    return a.g == 0 || b.g == 0;
+  };
+  auto overlap = core::find_instance_overlap(near.structure, 0, with_copy_zero);
   if (overlap) {
     overlap->a.g = near.near[overlap->a.g];
     overlap->b.g = near.near[overlap->b.g];
