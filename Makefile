@@ -5,7 +5,8 @@
 #               (rotation composition and the Lemma 4.2 n-gon check, K_m vs CORE; 2D templated
 #               vs conventional generation, docs/benchmarks/2d.md; 3D n-TSVs vs TetGen on the
 #               whole geometry, docs/benchmarks/3d.md, and the larger TSVs at 10^7 tetrahedra,
-#               docs/benchmarks/3d-1e7.md)
+#               docs/benchmarks/3d-1e7.md, as rotational slices and as the 2n half-slices of
+#               Algorithm 6.5, docs/benchmarks/3d-half-1e7.md)
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
@@ -42,6 +43,7 @@ bench: deps
 	/usr/bin/python3 bench/generate_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks --objects tsv-32,tsv-64,tsv-128 --counts 1e7 --no-huge --no-gmsh --name 3d-1e7
+	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks --objects tsv-half-32,tsv-half-64,tsv-half-128 --counts 1e7 --no-huge --no-gmsh --name 3d-half-1e7
 	/usr/bin/python3 bench/merge_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/merge_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/gummel.py $(BENCH_BUILD)/symmesh docs/benchmarks
