@@ -296,7 +296,7 @@ def write_report(a, summary, largest, wall, commit, huge, calibration=()):
          "the rotational slices of Section 6.3 with Algorithm 5.7: TetGen once per slice template) "
          "(reflective for the FinFET, bpp for the multi-TSV, combined — Algorithm 6.5, 2n "
          "half-slices — for tsv-half-N) and conventional (`--method "
-         "conventional --no-repair`: TetGen alone with the same switches `-pYq2a…` on the whole "
+         "conventional --no-repair`: TetGen alone with the same switches `-pYq2/10a…` on the whole "
          "geometry, one call, on the same boundary meshes); the templated runs include the "
          "outlier repair after TetGen (spec/generation.md#outlier-repair: flips and moves of "
          "TetGen's interior points on the template tetrahedra beyond radius-edge 1.414 or below "

@@ -96,7 +96,10 @@ TEST(TetrahedralMesher, UnitCubeKeepsItsSurfaceTrianglesAndFillsTheVolume) {
   EXPECT_LT((above + above_inside) * 2, m.tetrahedra.size()) << above << " + " << above_inside;
   EXPECT_GT(double(m.tetrahedra.size()), 0.5 / gen::volume_bound(0.2));
   EXPECT_FALSE(gen::boundary_mismatch(s, m).has_value());
-  EXPECT_EQ(gen::tetgen_switches(params(0.2), false), "pYq1.414a0.000942809zQ");
+  EXPECT_EQ(gen::tetgen_switches(params(0.2), false), "pYq1.414/10a0.000942809zQ");
+  auto no_dihedral = params(0.2);
+  no_dihedral.min_dihedral_deg = 0; // TetGen's own default: no dihedral bound, no "/"
+  EXPECT_EQ(gen::tetgen_switches(no_dihedral, true), "pYq1.414a0.000942809AzQ");
 }
 
 TEST(TetrahedralMesher, TwoRegionsFollowTheirSeedsAndKeepTheirInterface) {
@@ -152,6 +155,11 @@ TEST(TetrahedralMesher, BadSurfacesAreErrorsNotMeshes) {
   Grid c;
   c.add_box(cube, 0, 1);
   EXPECT_THROW(gen::mesh_domain_3(cube, params(0)), std::invalid_argument);
+  auto flat = params(0.3);
+  flat.min_dihedral_deg = 71; // above a regular tetrahedron's 70.53°: TetGen could never stop
+  EXPECT_THROW(gen::mesh_domain_3(cube, flat), std::invalid_argument);
+  flat.min_dihedral_deg = -1;
+  EXPECT_THROW(gen::mesh_domain_3(cube, flat), std::invalid_argument);
 }
 
 TEST(TetrahedralMesher, OrientTetrahedraPositivelySwapsNegativeOnes) {

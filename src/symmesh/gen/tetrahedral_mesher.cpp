@@ -78,6 +78,8 @@ void check_input(const SurfaceInput& s, const TetrahedralMeshingParameters& p) {
     throw std::invalid_argument("mesh size must be a positive number");
   if (!(p.radius_edge >= 1) || !std::isfinite(p.radius_edge))
     throw std::invalid_argument("radius-edge bound must be at least 1");
+  if (!(p.min_dihedral_deg >= 0 && p.min_dihedral_deg < 70.5))
+    throw std::invalid_argument("dihedral angle bound must be in [0, 70.5) degrees");
   std::set<std::array<double, 3>> seen;
   for (const auto& q : s.points) {
     if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
@@ -100,9 +102,11 @@ double volume_bound(double size) {
 }
 
 std::string tetgen_switches(const TetrahedralMeshingParameters& p, bool with_regions) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "pYq%.6ga%.6g%szQ", p.radius_edge, volume_bound(p.size),
-                with_regions ? "A" : "");
+  char dihedral[32] = "";
+  if (p.min_dihedral_deg > 0) std::snprintf(dihedral, sizeof dihedral, "/%.6g", p.min_dihedral_deg);
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "pYq%.6g%sa%.6g%szQ", p.radius_edge, dihedral,
+                volume_bound(p.size), with_regions ? "A" : "");
   return buf;
 }
 

@@ -3,7 +3,8 @@
 ///
 /// TetGen 1.5 (libtet, through `tetgenio`) on a closed triangulated surface: the surface meshes
 /// of a template's boundary patches, already refined to the size. Switches: -p (the input is a
-/// PLC), -Y (no Steiner point on the boundary), -q (radius-edge bound), -a (volume bound from
+/// PLC), -Y (no Steiner point on the boundary), -q (radius-edge bound, then after a slash the
+/// smallest dihedral angle TetGen refines towards), -a (volume bound from
 /// the size), -A with region seeds, -z (zero-based), -Q (quiet). TetGen's -Y is best effort, so
 /// the result is checked combinatorially afterwards: the input points come first and unchanged,
 /// and the boundary of the tetrahedral mesh (faces in one tetrahedron, or between two regions)
@@ -39,6 +40,11 @@ struct SurfaceInput {
 struct TetrahedralMeshingParameters {
   double size = 0; ///< target edge length; the volume bound is that of a regular tetrahedron
   double radius_edge = 2.0; ///< TetGen -q bound (its default; 1.414 for better shape, slower)
+  /// TetGen -q/D: the report's dihedral bound (mesh::kDihedralBoundDeg). Without it TetGen bounds
+  /// no dihedral angle, and on thin rotational half-slices it leaves slivers between the two cut
+  /// faces that no flip or move of the outlier repair can mend (spec/generation.md#mesher-3);
+  /// 0 leaves it out.
+  double min_dihedral_deg = 10;
 };
 
 struct TetrahedralMeshOutput {
@@ -57,10 +63,11 @@ struct BoundaryChanged : MeshingError {
 /// Regular tetrahedron volume for edge `size`: size³ / (6√2), TetGen's -a bound.
 double volume_bound(double size);
 
-/// The TetGen switches used for `p` and whether seeds are given ("pYq2a0.0001AzQ").
+/// The TetGen switches used for `p` and whether seeds are given ("pYq2/10a0.0001AzQ").
 std::string tetgen_switches(const TetrahedralMeshingParameters& p, bool with_regions);
 
-/// \pre p.size > 0, p.radius_edge >= 1 (TetGen's termination needs > ~1.1 with -q); the
+/// \pre p.size > 0, p.radius_edge >= 1 (TetGen's termination needs > ~1.1 with -q),
+/// 0 <= p.min_dihedral_deg < 70.5 (a regular tetrahedron's dihedral angle); the
 /// surface is closed, its points pairwise distinct and finite
 TetrahedralMeshOutput mesh_domain_3(const SurfaceInput& surface,
                                     const TetrahedralMeshingParameters& p);
