@@ -168,9 +168,33 @@ struct FacetFrame {
   P3<FT> p0, u, v, n;
   double lu = 0, lv = 0;
 
+  /// x in the plane's doubles by rounded(): the same exact point gives the same doubles however it
+  /// was reached, which the merge method relies on (it overlays the meshes of two faces).
   std::array<double, 2> to_plane(const P3<FT>& x) const {
     const P3<FT> d = x - p0;
     return {rounded(core::dot<FT, 3>(d, u)) / lu, rounded(core::dot<FT, 3>(d, v)) / lv};
+  }
+  /// x in the plane's doubles for a mesh that is the only one made of its face class (generation
+  /// carries it to the other faces by index): conformity and the exact interior points
+  /// (plane_coordinates) never depend on these doubles, and the mesher keeps its points ~size
+  /// apart, so a dot product is taken from its interval once that is within 1e-12·|d|·|u|
+  /// (~1e-12 of the face's extent in the plane) — rounded() asks for 4 ulp of the product itself,
+  /// and over K_512 the intervals of the line points are wider than that, so it evaluated most of
+  /// them exactly (at n = 128, half of the surface meshes' time).
+  std::array<double, 2> to_plane_once(const P3<FT>& x) const {
+    const P3<FT> d = x - p0;
+    double dd = 0;
+    for (int c = 0; c < 3; ++c) {
+      const auto [lo, hi] = CGAL::to_interval(d[c]);
+      dd += std::max(std::abs(lo), std::abs(hi)) * std::max(std::abs(lo), std::abs(hi));
+    }
+    return {coordinate(core::dot<FT, 3>(d, u), std::sqrt(dd) * lu) / lu,
+            coordinate(core::dot<FT, 3>(d, v), std::sqrt(dd) * lv) / lv};
+  }
+  static double coordinate(const FT& dot, double scale) {
+    const auto [lo, hi] = CGAL::to_interval(dot);
+    if (hi - lo <= 1e-12 * scale) return lo + (hi - lo) / 2;
+    return rounded(dot);
   }
   std::array<FT, 2> plane_coordinates(const std::array<double, 2>& q) const {
     return {exact_from_double<FT>(q[0] / lu), exact_from_double<FT>(q[1] / lv)};
@@ -219,14 +243,17 @@ std::vector<std::array<std::size_t, 2>> facet_boundary(const core::BoundarySubdi
   return segments;
 }
 
+/// \p once: the mesh is the only one made of face f's class (to_plane_once), not one of several
+/// meshes of congruent faces that are compared later (the merge method: to_plane).
 template <class FT>
 FacetMesh<FT> mesh_facet(const core::BoundarySubdivision<FT, 3>& sd, const SurfaceBoundary<FT>& tb,
-                         std::size_t f, double size, double min_angle_deg) {
+                         std::size_t f, double size, double min_angle_deg, bool once = false) {
   FacetMesh<FT> out;
   BoundaryInput in;
   in.segments = facet_boundary(sd, tb, f, out.boundary_ids);
   const auto frame = facet_frame(sd, f);
-  for (std::size_t id : out.boundary_ids) in.points.push_back(frame.to_plane(tb.exact[id]));
+  for (std::size_t id : out.boundary_ids)
+    in.points.push_back(once ? frame.to_plane_once(tb.exact[id]) : frame.to_plane(tb.exact[id]));
   MeshingParameters p;
   p.size = size;
   p.min_angle_deg = min_angle_deg;
@@ -433,7 +460,7 @@ void surface_meshes(const core::TemplatedStructure<FT, 3>& x,
   for (std::size_t k = 0; k < classes.size(); ++k) {
     const auto [t, f] = classes[k].first;
     const auto rep = groups[k].is_trivial()
-                         ? mesh_facet(sds[t], boundaries[t], f, size, min_angle_deg)
+                         ? mesh_facet(sds[t], boundaries[t], f, size, min_angle_deg, true)
                          : mesh_symmetric_facet(x, sds[t], boundaries[t], classes[k].first,
                                                 groups[k], h2, size, min_angle_deg);
     const auto st = std::make_shared<const std::vector<std::array<FT, 2>>>(rep.st);
