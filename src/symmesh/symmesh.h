@@ -132,6 +132,7 @@ struct GenerateOptions {
   double max_cells = 0;        ///< refuse larger estimates; 0: memory / 250 bytes per cell
   bool progress = false;       ///< progress lines on stderr, as the CLI without --quiet
   bool repair_outliers = true; ///< 3D: the outlier repair after TetGen (false: --no-repair)
+  double tetgen_dihedral = 10; ///< 3D: TetGen's -q/D in degrees, [0, 70.5) (--tetgen-dihedral)
 };
 
 /// File options of `generate -o` (spec/outputs.md#mesh-files).

@@ -132,6 +132,23 @@ qa['below_dihedral_bound'] < qb['below_dihedral_bound'], (o, qa, qb)" \
     && pass "TSV: the outlier repair only improves TetGen's worst cells; --no-repair skips it" \
     || fail "TSV: outlier repair report or quality"
 else fail "TSV: generate --no-repair failed"; fi
+# TetGen's dihedral bound (-q/D, spec/generation.md#mesher-3): 10 by default and reported; 0
+# leaves it out; a bound TetGen could never meet is refused before any work, naming the option.
+expect_exit 2 "--tetgen-dihedral 71 is refused" -- "$BIN" generate "$TMP/tsv8_input.json" \
+  --size 0.15 -o "$TMP/bad_dihedral.vtu" --tetgen-dihedral 71 --quiet
+[ ! -e "$TMP/bad_dihedral.vtu" ] && [ "$(wc -l < "$TMP/stderr")" -eq 1 ] \
+  && grep -q -- "--tetgen-dihedral 71" "$TMP/stderr" \
+  && pass "--tetgen-dihedral 71: one line naming it, no file" \
+  || fail "--tetgen-dihedral 71: $(cat "$TMP/stderr")"
+if "$BIN" generate "$TMP/tsv8_input.json" --size 0.15 -o "$TMP/tsv8_d0.vtu" \
+    --report "$TMP/tsv8_d0.json" --quiet --tetgen-dihedral 0; then
+  $PY -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); \
+assert a['tetgen_min_dihedral_deg'] == 10 and b['tetgen_min_dihedral_deg'] == 0 and \
+b['lemma_4_2_holds'], (a.get('tetgen_min_dihedral_deg'), b.get('tetgen_min_dihedral_deg'))" \
+    "$TMP/tsv8.json" "$TMP/tsv8_d0.json" \
+    && pass "TSV: TetGen's dihedral bound is 10 by default, 0 with --tetgen-dihedral 0, reported" \
+    || fail "TSV: tetgen_min_dihedral_deg in the reports"
+else fail "TSV: generate --tetgen-dihedral 0 failed"; fi
 
 # Every built-in 3D object (example --list, summary "3D ..."): auto (rotational) at a coarse
 # size, the same meshio checks with its own volume and boundary area.

@@ -68,6 +68,7 @@ gen::GenerationResult run_method(const core::TemplatedStructure<FT, D>& x, const
   g.min_angle_deg = o.min_angle;
   g.progress = o.progress;
   g.repair_outliers = o.repair_outliers;
+  g.tetgen_min_dihedral_deg = o.tetgen_dihedral;
   const auto method = methods().at(o.method);
   if constexpr (D == 2)
     return gen::generate_triangle_mesh(x, method, g);
@@ -139,6 +140,10 @@ void check_numbers(const RunOptions& o) {
     throw Refusal(kBadInput, "--min-angle " + round_text(o.min_angle) +
                                  ": must be between 0 and 33.8 degrees (Delaunay refinement "
                                  "does not terminate above)");
+  if (!(o.tetgen_dihedral >= 0 && o.tetgen_dihedral < 70.5))
+    throw Refusal(kBadInput, "--tetgen-dihedral " + round_text(o.tetgen_dihedral) +
+                                 ": must be at least 0 and below 70.5 degrees (a regular "
+                                 "tetrahedron's dihedral angle)");
   if (!(o.max_cells >= 0) || !std::isfinite(o.max_cells))
     throw Refusal(kBadInput,
                   "--max-cells " + round_text(o.max_cells) + ": must be a positive number");
@@ -236,6 +241,7 @@ nlohmann::ordered_json generation_report(const gen::GenerationResult& r, const R
                     {"min_angle_histogram", q.histogram}};
   } else {
     j["quality"] = tetrahedron_quality_json(r.templated.templated);
+    if (r.method != "gmsh") j["tetgen_min_dihedral_deg"] = o.tetgen_dihedral;
     if (o.repair_outliers && r.method != "gmsh")
       j["outlier_repair"] = {{"template_cells_before", r.outliers_before},
                              {"template_cells_after", r.outliers_after},

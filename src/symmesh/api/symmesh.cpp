@@ -172,6 +172,7 @@ Generation::Generation(const Structure& structure, const GenerateOptions& option
   o.min_angle = options.min_angle;
   o.max_cells = options.max_cells;
   o.repair_outliers = options.repair_outliers;
+  o.tetgen_dihedral = options.tetgen_dihedral;
   std::unique_ptr<mesh::Progress> progress;
   if (options.progress) progress = std::make_unique<mesh::Progress>("symmesh generate", std::cerr);
   o.progress = progress.get();

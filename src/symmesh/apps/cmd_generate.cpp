@@ -130,6 +130,11 @@ void add_generate(CLI::App& app, int& exit_code) {
                 "3D: keep TetGen's tetrahedra as they are (by default the few beyond "
                 "radius-edge 1.414 or below a 10 degree dihedral angle are repaired by flips and "
                 "moves of TetGen's interior points; spec/generation.md#outlier-repair)");
+  cmd->add_option("--tetgen-dihedral", o->run.tetgen_dihedral,
+                  "3D: the smallest dihedral angle in degrees TetGen refines towards (its -q/D, "
+                  "in every TetGen call, templates and whole geometry alike; 0: none, TetGen's "
+                  "default; spec/generation.md#mesher-3)")
+      ->capture_default_str();
   cmd->callback([o, &exit_code] { exit_code = run_generate(*o); });
 }
 

@@ -55,6 +55,7 @@ void mesh_templates_3(const core::TemplatedStructure<FT, 3>& x,
     s.triangles = boundaries[i].triangles;
     TetrahedralMeshingParameters p;
     p.size = o.size;
+    p.min_dihedral_deg = o.tetgen_min_dihedral_deg;
     TetrahedralMeshOutput out;
     try {
       out = mesh_and_repair(s, p, o, r);

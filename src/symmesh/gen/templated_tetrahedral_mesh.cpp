@@ -198,6 +198,7 @@ void mesh_whole(const core::TemplatedStructure<FT, 3>& x,
   const auto s = whole_surface(x, boundaries, r).surface;
   TetrahedralMeshingParameters p;
   p.size = o.size;
+  p.min_dihedral_deg = o.tetgen_min_dihedral_deg;
   const auto out = surface3::mesh_and_repair(s, p, o, r);
   const std::size_t regions = store_by_region(out, r);
   r.timings.template_meshing = seconds_since(t0);

@@ -47,6 +47,9 @@ struct GenerationOptions {
   /// TetGen's interior points on the tetrahedra beyond radius-edge √2 or below a 10° dihedral
   /// angle; the boundary is not touched).
   bool repair_outliers = true;
+  /// 3D: TetGen's -q/D, the smallest dihedral angle it refines towards, in every TetGen call of
+  /// the 3D methods (templates and the whole geometry alike; 0: none) — spec/generation.md#mesher-3
+  double tetgen_min_dihedral_deg = 10;
 };
 
 struct GenerationTimings {
