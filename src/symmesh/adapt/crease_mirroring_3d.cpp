@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <utility>
@@ -197,7 +198,7 @@ void split_site(Surface& surface, const Site& e, IndexType m) {
 
 } // namespace
 
-std::vector<FacingPlanes> facing_planes(const Session& s) {
+std::vector<FacingPlanes> facing_planes(const Session& s, const NearRightCreases* creases) {
   std::vector<FacingPlanes> out;
   for (const auto& w : s.w) {
     out.emplace_back();
@@ -245,13 +246,74 @@ std::vector<FacingPlanes> facing_planes(const Session& s) {
       for (std::size_t j = i + 1; j < fp.planes.size(); ++j) {
         const auto &a = fp.planes[i], &b = fp.planes[j];
         const double cosine = dot3(a.n, b.n);
-        if (!(cosine < -0.5 && cosine > -1 + 1e-9)) continue;
+        if (!(cosine < -1e-9 && cosine > -1 + 1e-9)) continue;
         const Vec diff = minus(a.n, b.n);
         const double l = std::sqrt(dot3(diff, diff));
-        fp.mirrors[{int(i), int(j)}] = {{diff[0] / l, diff[1] / l, diff[2] / l}, (a.d - b.d) / l};
+        (cosine < -0.5 ? fp.mirrors : fp.near_right)[{int(i), int(j)}] = {
+            {diff[0] / l, diff[1] / l, diff[2] / l}, (a.d - b.d) / l};
       }
+    if (creases) creases->apply(fp, out.size() - 1);
   }
   return out;
+}
+
+NearRightCreases::NearRightCreases(const Session& s) : marked_(s.w.size()) {
+  for (const auto& w : s.w) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const auto& c : w.cells)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          const Vec e = sub3(w.p(c[std::size_t(i)]), w.p(c[std::size_t(j)]));
+          shortest = std::min(shortest, std::sqrt(dot3(e, e)));
+        }
+    short_edge_.push_back(shortest / 16);
+  }
+}
+
+bool NearRightCreases::same(const FacingPlanes::Plane& x, const FacingPlanes::Plane& y,
+                            double scale) {
+  return dot3(x.n, y.n) >= 1 - 1e-9 && std::abs(x.d - y.d) <= 1e-9 * scale;
+}
+
+bool NearRightCreases::is_marked(const FacingPlanes& fp, std::size_t t,
+                                 std::pair<int, int> ij) const {
+  const auto& a = fp.planes[std::size_t(ij.first)];
+  const auto& b = fp.planes[std::size_t(ij.second)];
+  return std::any_of(marked_[t].begin(), marked_[t].end(), [&](const PlanePair& m) {
+    return (same(m.first, a, fp.scale) && same(m.second, b, fp.scale)) ||
+           (same(m.first, b, fp.scale) && same(m.second, a, fp.scale));
+  });
+}
+
+bool NearRightCreases::watch(const FacingPlanes& fp, std::size_t t, IndexType a, IndexType b,
+                             const Work& w) {
+  const Vec e = sub3(w.p(a), w.p(b));
+  if (!(std::sqrt(dot3(e, e)) < short_edge_[t]) ||
+      std::size_t(std::max(a, b)) >= fp.vertex_planes.size())
+    return false;
+  const auto touches = [&](int plane) {
+    const auto& pa = fp.vertex_planes[std::size_t(a)];
+    const auto& pb = fp.vertex_planes[std::size_t(b)];
+    return std::find(pa.begin(), pa.end(), plane) != pa.end() ||
+           std::find(pb.begin(), pb.end(), plane) != pb.end();
+  };
+  bool fresh = false;
+  for (const auto& [ij, mirror] : fp.near_right)
+    if (touches(ij.first) && touches(ij.second) && !is_marked(fp, t, ij)) {
+      marked_[t].push_back({fp.planes[std::size_t(ij.first)], fp.planes[std::size_t(ij.second)]});
+      fresh = true;
+    }
+  return fresh;
+}
+
+void NearRightCreases::apply(FacingPlanes& fp, std::size_t t) const {
+  for (auto it = fp.near_right.begin(); it != fp.near_right.end();)
+    if (is_marked(fp, t, it->first)) {
+      fp.mirrors.insert(*it);
+      it = fp.near_right.erase(it);
+    } else {
+      ++it;
+    }
 }
 
 std::optional<std::array<double, 3>> crease_mirror(const Work& w, const FacingPlanes& planes,

@@ -32,6 +32,13 @@ namespace symmesh::adapt::work {
 /// planes (n1 . n2 = -1 up to 1e-9: the faces of a thin layer, top and bottom) are left to
 /// bisection: mirroring across their mid-plane carried points from layer to layer of the TSV
 /// liners (related faces face the next layer), and the 8-TSV slice hit the refinement cap.
+///
+/// Pairs in a wedge between 60° and 90° (-1/2 <= n1 . n2 < 0) are kept apart in `near_right`:
+/// Delaunay refinement in 3D is guaranteed to end only where boundary planes meet at 90° or more,
+/// and below that it may ping-pong too (the 87.2° crease of the tsv-half-32 oxide, where the mirror
+/// face meets the liner, bisected edges down to 1e-6 until TetGen gave up), but mirroring at every
+/// such crease left slivers flat to rounding on the 64- and 128-TSV slices. So such a pair mirrors
+/// only once refinement at its crease was seen to ping-pong (NearRightCreases).
 struct FacingPlanes {
   struct Plane {
     std::array<double, 3> n{}; ///< outward unit normal
@@ -46,10 +53,33 @@ struct FacingPlanes {
   std::map<std::array<IndexType, 3>, int> triangle_plane; ///< by sorted vertices
   std::vector<std::vector<int>> vertex_planes;            ///< the planes of a vertex's triangles
   std::map<std::pair<int, int>, Mirror> mirrors;          ///< facing pairs (i < j)
+  std::map<std::pair<int, int>, Mirror> near_right;       ///< pairs in 60°..90°, not mirrored
 };
 
-/// The boundary planes and facing pairs of every template.
-std::vector<FacingPlanes> facing_planes(const Session& s);
+/// The near-right crease pairs (FacingPlanes::near_right) of each template that mirror: those at
+/// which a boundary edge to bisect was already shorter than 1/16 of the template's shortest input
+/// edge (watch). Kept by plane, not by index, as the planes are found anew every round.
+class NearRightCreases {
+public:
+  explicit NearRightCreases(const Session& s);
+  /// Marks the near-right pairs of template t's planes that edge {a, b} touches (each plane holds
+  /// a or b), when the edge is that short; true when a pair was newly marked.
+  bool watch(const FacingPlanes& fp, std::size_t t, IndexType a, IndexType b, const Work& w);
+  /// Moves the marked pairs of fp (template t) from near_right to mirrors.
+  void apply(FacingPlanes& fp, std::size_t t) const;
+
+private:
+  using PlanePair = std::pair<FacingPlanes::Plane, FacingPlanes::Plane>;
+  static bool same(const FacingPlanes::Plane& x, const FacingPlanes::Plane& y, double scale);
+  bool is_marked(const FacingPlanes& fp, std::size_t t, std::pair<int, int> ij) const;
+  std::vector<double> short_edge_;
+  std::vector<std::vector<PlanePair>> marked_;
+};
+
+/// The boundary planes and facing pairs of every template; near-right pairs mirror where
+/// `creases` marked them.
+std::vector<FacingPlanes> facing_planes(const Session& s,
+                                        const NearRightCreases* creases = nullptr);
 
 /// The mirror image of boundary vertex q of w onto the plane of boundary triangle f of w, when q
 /// lies on a plane that faces f's (FacingPlanes), not on f's plane itself, and the image lies

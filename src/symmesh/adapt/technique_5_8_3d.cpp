@@ -774,6 +774,7 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
   // Refinement that keeps encroaching (acute boundary angles, Figure 5.17) is stopped by this
   // cap long before the round cap: 16 times the input's template cells.
   const std::size_t max_cells = 16 * cell_count() + 4096;
+  NearRightCreases creases(s);
   for (;;) {
     if (cell_count() > max_cells)
       limit("the template boundaries were refined to " + std::to_string(cell_count()) +
@@ -786,8 +787,16 @@ DelaunayReport make_delaunay_3d(Session& s, std::size_t max_rounds, mesh::Progre
     std::vector<std::pair<TemplateEdge, std::vector<std::size_t>>> fallback;
     {
       const Round3 r(s);
-      auto e = encroached_boundary(
-          s, r, index, crease_mirrors ? facing_planes(s) : std::vector<FacingPlanes>(s.w.size()));
+      const auto facing =
+          crease_mirrors ? facing_planes(s, &creases) : std::vector<FacingPlanes>(s.w.size());
+      auto e = encroached_boundary(s, r, index, facing);
+      // Ping-pong at a near-right crease: its planes mirror from the next round on.
+      if (crease_mirrors) {
+        for (const auto& edge : e.edges)
+          creases.watch(facing[edge.t], edge.t, edge.a, edge.b, s.w[edge.t]);
+        for (const auto& [edge, points] : e.fallback)
+          creases.watch(facing[edge.t], edge.t, edge.a, edge.b, s.w[edge.t]);
+      }
       bad = std::move(e.edges);
       mirrors = std::move(e.mirrors);
       fallback = std::move(e.fallback);
