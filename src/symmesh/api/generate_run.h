@@ -37,7 +37,8 @@ struct RunOptions {
   double size = 0, min_angle = 20;
   double max_cells = 0;        ///< 0: the default from the machine's memory
   bool repair_outliers = true; ///< 3D: the outlier repair after TetGen (generate --no-repair)
-  double tetgen_dihedral = 10; ///< 3D: TetGen's -q/D (generate --tetgen-dihedral; 0: none)
+  double tetgen_dihedral =
+      mesh::kDihedralBoundDeg; ///< 3D: TetGen's -q/D (generate --tetgen-dihedral; 0: none)
   mesh::Progress* progress = nullptr;
 };
 

@@ -21,6 +21,9 @@
 
 namespace symmesh {
 
+// The public header keeps its own literal so that it includes nothing of the library.
+static_assert(GenerateOptions{}.tetgen_dihedral == mesh::kDihedralBoundDeg);
+
 std::string version() {
   return SYMMESH_VERSION;
 }

@@ -45,13 +45,16 @@ FT exact_from_double(double v) {
     return FT(number::Cyclotomic(q));
 }
 
-/// rounded()'s first case: the midpoint of v's certified interval when that is within 4 units
-/// in the last place, else nothing (the caller then finds the double nearest to the exact value).
+/// The midpoint of v's certified interval when that is at most \p max_width wide — by default
+/// 4 units in the last place of its bounds (rounded()'s first case) — else nothing (the caller
+/// then finds the double nearest to the exact value).
 template <class FT>
-std::optional<double> narrow_midpoint(const FT& v) {
+std::optional<double> narrow_midpoint(const FT& v, std::optional<double> max_width = {}) {
   const auto [lo, hi] = CGAL::to_interval(v);
-  if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)))
-    return lo + (hi - lo) / 2;
+  const double w =
+      max_width ? *max_width
+                : 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi));
+  if (hi - lo <= w) return lo + (hi - lo) / 2;
   return std::nullopt;
 }
 

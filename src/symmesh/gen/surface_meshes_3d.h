@@ -32,6 +32,7 @@ using support::exact_from_double;
 using support::FaceLine;
 using support::LazyCyclotomic;
 using support::minor_faults;
+using support::narrow_midpoint;
 using support::rounded;
 using support::seconds_since;
 using support::SvbPairs;
@@ -192,8 +193,7 @@ struct FacetFrame {
             coordinate(core::dot<FT, 3>(d, v), std::sqrt(dd) * lv) / lv};
   }
   static double coordinate(const FT& dot, double scale) {
-    const auto [lo, hi] = CGAL::to_interval(dot);
-    if (hi - lo <= 1e-12 * scale) return lo + (hi - lo) / 2;
+    if (const auto m = narrow_midpoint(dot, 1e-12 * scale)) return *m;
     return rounded(dot);
   }
   std::array<FT, 2> plane_coordinates(const std::array<double, 2>& q) const {

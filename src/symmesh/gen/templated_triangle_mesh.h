@@ -16,6 +16,7 @@
 #include "symmesh/core/kernel.h"
 #include "symmesh/core/templated_structure.h"
 #include "symmesh/mesh/progress.h"
+#include "symmesh/mesh/quality.h"
 #include "symmesh/mesh/templated_mesh.h"
 #include "symmesh/number/cyclotomic.h"
 
@@ -49,7 +50,7 @@ struct GenerationOptions {
   bool repair_outliers = true;
   /// 3D: TetGen's -q/D, the smallest dihedral angle it refines towards, in every TetGen call of
   /// the 3D methods (templates and the whole geometry alike; 0: none) — spec/generation.md#mesher-3
-  double tetgen_min_dihedral_deg = 10;
+  double tetgen_min_dihedral_deg = mesh::kDihedralBoundDeg;
 };
 
 struct GenerationTimings {

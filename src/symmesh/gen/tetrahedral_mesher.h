@@ -14,6 +14,7 @@
 #pragma once
 #include "symmesh/gen/triangle_mesher.h"
 #include "symmesh/mesh/mesh.h"
+#include "symmesh/mesh/quality.h"
 
 #include <array>
 #include <cstddef>
@@ -44,7 +45,7 @@ struct TetrahedralMeshingParameters {
   /// no dihedral angle, and on thin rotational half-slices it leaves slivers between the two cut
   /// faces that no flip or move of the outlier repair can mend (spec/generation.md#mesher-3);
   /// 0 leaves it out.
-  double min_dihedral_deg = 10;
+  double min_dihedral_deg = mesh::kDihedralBoundDeg;
 };
 
 struct TetrahedralMeshOutput {
