@@ -196,6 +196,12 @@ void split_site(Surface& surface, const Site& e, IndexType m) {
   surface.changed = true;
 }
 
+/// One cluster of boundary triangles: the same outward unit normal and offset, up to 1e-9 (of the
+/// template's extent, for the offset).
+bool same_plane(const FacingPlanes::Plane& x, const FacingPlanes::Plane& y, double scale) {
+  return dot3(x.n, y.n) >= 1 - 1e-9 && std::abs(x.d - y.d) <= 1e-9 * scale;
+}
+
 } // namespace
 
 std::vector<FacingPlanes> facing_planes(const Session& s, const NearRightCreases* creases) {
@@ -230,8 +236,7 @@ std::vector<FacingPlanes> facing_planes(const Session& s, const NearRightCreases
       const double d = dot3(n, at(w.p(f[0])));
       int id = -1;
       for (std::size_t k = 0; k < fp.planes.size() && id < 0; ++k)
-        if (dot3(n, fp.planes[k].n) >= 1 - 1e-9 && std::abs(d - fp.planes[k].d) <= 1e-9 * fp.scale)
-          id = int(k);
+        if (same_plane({n, d}, fp.planes[k], fp.scale)) id = int(k);
       if (id < 0) {
         id = int(fp.planes.size());
         fp.planes.push_back({n, d});
@@ -270,40 +275,31 @@ NearRightCreases::NearRightCreases(const Session& s) : marked_(s.w.size()) {
   }
 }
 
-bool NearRightCreases::same(const FacingPlanes::Plane& x, const FacingPlanes::Plane& y,
-                            double scale) {
-  return dot3(x.n, y.n) >= 1 - 1e-9 && std::abs(x.d - y.d) <= 1e-9 * scale;
-}
-
 bool NearRightCreases::is_marked(const FacingPlanes& fp, std::size_t t,
                                  std::pair<int, int> ij) const {
   const auto& a = fp.planes[std::size_t(ij.first)];
   const auto& b = fp.planes[std::size_t(ij.second)];
   return std::any_of(marked_[t].begin(), marked_[t].end(), [&](const PlanePair& m) {
-    return (same(m.first, a, fp.scale) && same(m.second, b, fp.scale)) ||
-           (same(m.first, b, fp.scale) && same(m.second, a, fp.scale));
+    return (same_plane(m.first, a, fp.scale) && same_plane(m.second, b, fp.scale)) ||
+           (same_plane(m.first, b, fp.scale) && same_plane(m.second, a, fp.scale));
   });
 }
 
-bool NearRightCreases::watch(const FacingPlanes& fp, std::size_t t, IndexType a, IndexType b,
+void NearRightCreases::watch(const FacingPlanes& fp, std::size_t t, IndexType a, IndexType b,
                              const Work& w) {
   const Vec e = sub3(w.p(a), w.p(b));
   if (!(std::sqrt(dot3(e, e)) < short_edge_[t]) ||
       std::size_t(std::max(a, b)) >= fp.vertex_planes.size())
-    return false;
+    return;
   const auto touches = [&](int plane) {
     const auto& pa = fp.vertex_planes[std::size_t(a)];
     const auto& pb = fp.vertex_planes[std::size_t(b)];
     return std::find(pa.begin(), pa.end(), plane) != pa.end() ||
            std::find(pb.begin(), pb.end(), plane) != pb.end();
   };
-  bool fresh = false;
   for (const auto& [ij, mirror] : fp.near_right)
-    if (touches(ij.first) && touches(ij.second) && !is_marked(fp, t, ij)) {
+    if (touches(ij.first) && touches(ij.second) && !is_marked(fp, t, ij))
       marked_[t].push_back({fp.planes[std::size_t(ij.first)], fp.planes[std::size_t(ij.second)]});
-      fresh = true;
-    }
-  return fresh;
 }
 
 void NearRightCreases::apply(FacingPlanes& fp, std::size_t t) const {

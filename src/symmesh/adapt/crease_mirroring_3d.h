@@ -63,14 +63,13 @@ class NearRightCreases {
 public:
   explicit NearRightCreases(const Session& s);
   /// Marks the near-right pairs of template t's planes that edge {a, b} touches (each plane holds
-  /// a or b), when the edge is that short; true when a pair was newly marked.
-  bool watch(const FacingPlanes& fp, std::size_t t, IndexType a, IndexType b, const Work& w);
+  /// a or b), when the edge is that short.
+  void watch(const FacingPlanes& fp, std::size_t t, IndexType a, IndexType b, const Work& w);
   /// Moves the marked pairs of fp (template t) from near_right to mirrors.
   void apply(FacingPlanes& fp, std::size_t t) const;
 
 private:
   using PlanePair = std::pair<FacingPlanes::Plane, FacingPlanes::Plane>;
-  static bool same(const FacingPlanes::Plane& x, const FacingPlanes::Plane& y, double scale);
   bool is_marked(const FacingPlanes& fp, std::size_t t, std::pair<int, int> ij) const;
   std::vector<double> short_edge_;
   std::vector<std::vector<PlanePair>> marked_;
