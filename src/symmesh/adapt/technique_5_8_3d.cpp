@@ -106,6 +106,36 @@ P3 image3(const Session& s, std::size_t instance, IndexType v) {
   return P3(q[0], q[1], q[2]);
 }
 
+/// An instance pair (i, j) across an interface, and its vertex map from i's template to j's.
+struct InterfacePair {
+  std::size_t i = 0, j = 0;
+  const std::unordered_map<IndexType, IndexType>* map = nullptr;
+};
+
+/// One instance pair per identification table and direction, the first in the list. The pairs
+/// that share a table are congruent: the table fixes where j's interface vertices lie in i's
+/// frame (identified vertices coincide, which reading the .tmesh checks), and for instances that
+/// meet without overlapping that fixes T_i^-1 T_j. The interface steps decide in template terms
+/// (template edges, mirror points in template coordinates), so one pair decides for all. (The
+/// tsv-half-32 slices have 256 identifications over 6 tables; testing every pair was most of a
+/// round.)
+std::vector<InterfacePair> pair_per_table(const mesh::TemplatedMeshCompactSvb& t,
+                                          const std::vector<TableIndex>& index,
+                                          bool both_directions) {
+  std::vector<InterfacePair> out;
+  std::set<std::pair<IndexType, bool>> seen;
+  for (const auto& id : t.identifications)
+    for (bool forward : {true, false}) {
+      if ((!forward && !both_directions) || !seen.insert({id.table, forward}).second) continue;
+      const auto& table = index[std::size_t(id.table)];
+      if (forward)
+        out.push_back({std::size_t(id.from_instance), std::size_t(id.to_instance), &table.fwd});
+      else
+        out.push_back({std::size_t(id.to_instance), std::size_t(id.from_instance), &table.bwd});
+    }
+  return out;
+}
+
 /// One round's view of the templates: facets, boundary triangles and point grids.
 struct Round3 {
   std::vector<FacetMap> facets;
@@ -210,6 +240,19 @@ bool delaunay_face(const P3& a, const P3& b, const P3& c, const std::vector<P3>&
   return true;
 }
 
+/// Triangle (a, b, c)'s circumcentre o, squared circumradius rho2 and the distance from o beyond
+/// which no sphere that delaunay_face considers reaches (4.5 rho, with a margin for rounding).
+struct TriangleReach {
+  P3 o;
+  double rho2, reach;
+  std::array<double, 3> centre;
+};
+TriangleReach reach_of(const P3& a, const P3& b, const P3& c) {
+  const P3 o = CGAL::circumcenter(a, b, c);
+  const double rho2 = CGAL::squared_distance(o, a);
+  return {o, rho2, 4.5 * std::sqrt(rho2) * (1 + 1e-6), {o.x(), o.y(), o.z()}};
+}
+
 /// What the encroachment step does next: edges to bisect, and points to insert on template
 /// boundary triangles (mirror images across the bisector of two facing planes: an acute crease or
 /// a thin wedge, crease_mirroring_3d.h), each triangle
@@ -271,13 +314,10 @@ Encroached encroached_boundary(const Session& s, const Round3& r,
       if (entry.second.size() != 1) continue;
       const auto& f = entry.first;
       const P3 a = p3(w.p(f[0])), b = p3(w.p(f[1])), c = p3(w.p(f[2]));
-      const P3 o = CGAL::circumcenter(a, b, c);
-      const double rho2 = CGAL::squared_distance(o, a);
-      const double reach = 4.5 * std::sqrt(rho2) * (1 + 1e-6);
-      const double oc[3] = {o.x(), o.y(), o.z()};
+      const auto [o, rho2, reach, oc] = reach_of(a, b, c);
       near.clear();
       near_i.clear();
-      r.grids[t].near(oc, reach, [&](IndexType q) {
+      r.grids[t].near(oc.data(), reach, [&](IndexType q) {
         if (q != f[0] && q != f[1] && q != f[2]) near.push_back(p3(w.p(q))), near_i.push_back(q);
       });
       std::optional<P3> by;
@@ -292,51 +332,43 @@ Encroached encroached_boundary(const Session& s, const Round3& r,
         out.fallback.push_back({edge_to_split(w, t, f, {a, b, c}, *by), used});
     }
   }
-  for (const auto& id : s.t.identifications)
-    for (bool forward : {true, false}) {
-      const auto i = std::size_t(forward ? id.from_instance : id.to_instance);
-      const auto j = std::size_t(forward ? id.to_instance : id.from_instance);
-      const auto& map =
-          forward ? index[std::size_t(id.table)].fwd : index[std::size_t(id.table)].bwd;
-      const auto ti = s.template_of[i], tj = s.template_of[j];
-      for_each_interface_triangle(s, r, i, j, map, [&](const auto& f, IndexType, const auto& g) {
-        const P3 a = image3(s, i, f[0]), b = image3(s, i, f[1]), c = image3(s, i, f[2]);
-        const P3 o = CGAL::circumcenter(a, b, c);
-        const double rho2 = CGAL::squared_distance(o, a);
-        const double reach = 4.5 * std::sqrt(rho2) * (1 + 1e-6);
-        const double oc[3] = {o.x(), o.y(), o.z()};
-        near.clear();
-        near_i.clear();
-        near_j.clear();
-        // Both sides: the sphere must be empty of the two instances' vertices at once.
-        double local[3];
-        apply_inverse(s.transformation(i), oc, local);
-        r.grids[ti].near(local, reach, [&](IndexType q) {
-          if (q != f[0] && q != f[1] && q != f[2])
-            near.push_back(image3(s, i, q)), near_i.push_back(q);
-        });
-        apply_inverse(s.transformation(j), oc, local);
-        r.grids[tj].near(local, reach, [&](IndexType q) {
-          if (q != g[0] && q != g[1] && q != g[2])
-            near.push_back(image3(s, j, q)), near_j.push_back(q);
-        });
-        std::optional<P3> by;
-        if (delaunay_face(a, b, c, near, by)) return;
-        // Facing planes of either template: the mirror goes into that template's copy of the
-        // triangle.
-        used.clear();
-        mirror_encroaching(
-            s, facing, ti, f, near_i, o, rho2, [&](IndexType q) { return image3(s, i, q); }, seen,
-            out.mirrors, used);
-        mirror_encroaching(
-            s, facing, tj, g, near_j, o, rho2, [&](IndexType q) { return image3(s, j, q); }, seen,
-            out.mirrors, used);
-        if (used.empty())
-          bad.insert(edge_to_split(s.w[ti], ti, f, {a, b, c}, *by));
-        else
-          out.fallback.push_back({edge_to_split(s.w[ti], ti, f, {a, b, c}, *by), used});
+  for (const auto& [i, j, map] : pair_per_table(s.t, index, true)) {
+    const auto ti = s.template_of[i], tj = s.template_of[j];
+    for_each_interface_triangle(s, r, i, j, *map, [&](const auto& f, IndexType, const auto& g) {
+      const P3 a = image3(s, i, f[0]), b = image3(s, i, f[1]), c = image3(s, i, f[2]);
+      const auto [o, rho2, reach, oc] = reach_of(a, b, c);
+      near.clear();
+      near_i.clear();
+      near_j.clear();
+      // Both sides: the sphere must be empty of the two instances' vertices at once.
+      double local[3];
+      apply_inverse(s.transformation(i), oc.data(), local);
+      r.grids[ti].near(local, reach, [&](IndexType q) {
+        if (q != f[0] && q != f[1] && q != f[2])
+          near.push_back(image3(s, i, q)), near_i.push_back(q);
       });
-    }
+      apply_inverse(s.transformation(j), oc.data(), local);
+      r.grids[tj].near(local, reach, [&](IndexType q) {
+        if (q != g[0] && q != g[1] && q != g[2])
+          near.push_back(image3(s, j, q)), near_j.push_back(q);
+      });
+      std::optional<P3> by;
+      if (delaunay_face(a, b, c, near, by)) return;
+      // Facing planes of either template: the mirror goes into that template's copy of the
+      // triangle.
+      used.clear();
+      mirror_encroaching(
+          s, facing, ti, f, near_i, o, rho2, [&](IndexType q) { return image3(s, i, q); }, seen,
+          out.mirrors, used);
+      mirror_encroaching(
+          s, facing, tj, g, near_j, o, rho2, [&](IndexType q) { return image3(s, j, q); }, seen,
+          out.mirrors, used);
+      if (used.empty())
+        bad.insert(edge_to_split(s.w[ti], ti, f, {a, b, c}, *by));
+      else
+        out.fallback.push_back({edge_to_split(s.w[ti], ti, f, {a, b, c}, *by), used});
+    });
+  }
   out.edges.assign(bad.begin(), bad.end());
   return out;
 }
@@ -514,24 +546,22 @@ std::vector<std::pair<std::size_t, IndexType>> not_positive_everywhere(const Ses
 std::vector<TemplateEdge> non_tald_3d(const Session& s, const Round3& r,
                                       const std::vector<TableIndex>& index) {
   std::set<TemplateEdge> bad;
-  for (const auto& id : s.t.identifications) {
-    const auto i = std::size_t(id.from_instance), j = std::size_t(id.to_instance);
+  for (const auto& [i, j, map] : pair_per_table(s.t, index, false)) {
     const auto ti = s.template_of[i], tj = s.template_of[j];
-    for_each_interface_triangle(
-        s, r, i, j, index[std::size_t(id.table)].fwd, [&](const auto& f, IndexType ci, auto g) {
-          std::sort(g.begin(), g.end());
-          const IndexType cj = r.facets[tj].at(g)[0];
-          const Cell& a = s.w[ti].cells[std::size_t(ci)];
-          const Cell& b = s.w[tj].cells[std::size_t(cj)];
-          const P3 qa = image3(s, i, apex(a, f)), qb = image3(s, j, apex(b, g));
-          const bool inside_a = CGAL::side_of_bounded_sphere(image3(s, i, a[0]), image3(s, i, a[1]),
-                                                             image3(s, i, a[2]), image3(s, i, a[3]),
-                                                             qb) == CGAL::ON_BOUNDED_SIDE;
-          const bool inside_b = CGAL::side_of_bounded_sphere(image3(s, j, b[0]), image3(s, j, b[1]),
-                                                             image3(s, j, b[2]), image3(s, j, b[3]),
-                                                             qa) == CGAL::ON_BOUNDED_SIDE;
-          if (inside_a || inside_b) bad.insert(longest_edge_of(s.w[ti], ti, f));
-        });
+    for_each_interface_triangle(s, r, i, j, *map, [&](const auto& f, IndexType ci, auto g) {
+      std::sort(g.begin(), g.end());
+      const IndexType cj = r.facets[tj].at(g)[0];
+      const Cell& a = s.w[ti].cells[std::size_t(ci)];
+      const Cell& b = s.w[tj].cells[std::size_t(cj)];
+      const P3 qa = image3(s, i, apex(a, f)), qb = image3(s, j, apex(b, g));
+      const bool inside_a =
+          CGAL::side_of_bounded_sphere(image3(s, i, a[0]), image3(s, i, a[1]), image3(s, i, a[2]),
+                                       image3(s, i, a[3]), qb) == CGAL::ON_BOUNDED_SIDE;
+      const bool inside_b =
+          CGAL::side_of_bounded_sphere(image3(s, j, b[0]), image3(s, j, b[1]), image3(s, j, b[2]),
+                                       image3(s, j, b[3]), qa) == CGAL::ON_BOUNDED_SIDE;
+      if (inside_a || inside_b) bad.insert(longest_edge_of(s.w[ti], ti, f));
+    });
   }
   return {bad.begin(), bad.end()};
 }
