@@ -114,11 +114,11 @@ struct InterfacePair {
 
 /// One instance pair per identification table and direction, the first in the list. The pairs
 /// that share a table are congruent: the table fixes where j's interface vertices lie in i's
-/// frame (identified vertices coincide, which reading the .tmesh checks), and for instances that
-/// meet without overlapping that fixes T_i^-1 T_j. The interface steps decide in template terms
-/// (template edges, mirror points in template coordinates), so one pair decides for all. (The
-/// tsv-half-32 slices have 256 identifications over 6 tables; testing every pair was most of a
-/// round.)
+/// frame (identified vertices coincide: adapt::certify_conformity checks the input), and for
+/// instances that meet without overlapping that fixes T_i^-1 T_j. The interface steps decide in
+/// template terms (template edges, mirror points in template coordinates), so one pair decides for
+/// all. (The tsv-half-32 slices have 256 identifications over 6 tables; testing every pair was most
+/// of a round.)
 std::vector<InterfacePair> pair_per_table(const mesh::TemplatedMeshCompactSvb& t,
                                           const std::vector<TableIndex>& index,
                                           bool both_directions) {
