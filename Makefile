@@ -45,6 +45,7 @@ bench: deps
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks --objects tsv-32,tsv-64,tsv-128 --counts 1e7 --no-huge --no-gmsh --name 3d-1e7
 	/usr/bin/python3 bench/generate_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks --objects tsv-half-32,tsv-half-64,tsv-half-128 --counts 1e7 --no-huge --no-gmsh --name 3d-half-1e7
 	/usr/bin/python3 bench/dihedral_ab.py $(BENCH_BUILD)/symmesh docs/benchmarks
+	/usr/bin/python3 bench/dihedral_ab.py $(BENCH_BUILD)/symmesh docs/benchmarks --count 1e7 --objects tsv-half-64 --name dihedral-1e7
 	/usr/bin/python3 bench/merge_2d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/merge_3d.py $(BENCH_BUILD)/symmesh docs/benchmarks
 	/usr/bin/python3 bench/gummel.py $(BENCH_BUILD)/symmesh docs/benchmarks

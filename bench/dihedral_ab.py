@@ -10,7 +10,10 @@ a repeat are interleaved. Timings, counts and qualities are the reports' (the sa
 generate_3d.py); writes dihedral.csv (every run), dihedral_summary.csv (medians and ratios), the
 plot and the Markdown report, so that no figure is edited by hand.
 
-Usage: dihedral_ab.py SYMMESH OUTDIR [--repeats R] [--count C] [--objects NAME,...]
+Usage: dihedral_ab.py SYMMESH OUTDIR [--repeats R] [--count C] [--objects NAME,...] [--name N]
+
+--name writes N.md, N.csv, N_summary.csv and N_speedup.png instead of dihedral*, so that a run at
+another count (e.g. 10^7 tetrahedra) is a report of its own.
 """
 import argparse
 import csv
@@ -60,7 +63,7 @@ def report(a, summary, objects, wall, commit, load):
          f"- machine: {platform.machine()}, {os.cpu_count()} cores, {cpu_name()}, "
          f"{platform.platform()}; symmesh at commit {commit}",
          f"- command: `bench/dihedral_ab.py {a.symmesh} {a.outdir} --repeats {a.repeats} "
-         f"--count {a.count:g} --objects {','.join(o[0] for o in objects)}`; wall time "
+         f"--count {a.count:g} --objects {','.join(o[0] for o in objects)} --name {a.name}`; wall time "
          f"{wall:.0f} s; 1-minute load average {load[0]:.2f} at the start, {load[1]:.2f} at the end",
          f"- medians of {a.repeats} repeats, the four runs of a repeat interleaved: templated "
          "(`--method auto`, with the outlier repair) and conventional (`--method conventional "
@@ -90,8 +93,8 @@ def report(a, summary, objects, wall, commit, load):
                  f"{q['speedup'] / z['speedup']:.2f} | "
                  f"{q['min_dihedral'] - z['min_dihedral']:+.2f} | "
                  f"{q['min_dihedral_conventional'] - z['min_dihedral_conventional']:+.2f} |")
-    L += ["", "![speed-up with and without /10](dihedral_speedup.png)", ""]
-    with open(os.path.join(a.outdir, "dihedral.md"), "w") as f:
+    L += ["", f"![speed-up with and without /10]({a.name}_speedup.png)", ""]
+    with open(os.path.join(a.outdir, f"{a.name}.md"), "w") as f:
         f.write("\n".join(L))
 
 
@@ -112,14 +115,14 @@ def plot(a, summary, objects):
         ax.plot([p[0] for p in pts], [p[1] for p in pts], style,
                 label=f"-q2/{d}" if d else "-q2 (no dihedral bound)")
     ns = sorted({o[1] for o in objects})
-    ax.plot(ns, ns, ":", color="grey", label="n (the target)")
+    ax.plot(ns, ns, ":", color="grey", label="y = n (issue 16: >= n up to 64, >= 0.8 n at 128)")
     ax.set_xscale("log", base=2)
     ax.set_xlabel("n (the n-TSV)")
     ax.set_ylabel("speed-up vs TetGen whole")
     ax.set_title(f"templated vs TetGen whole, ~{a.count:g} tetrahedra, medians of {a.repeats}")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(a.outdir, "dihedral_speedup.png"), dpi=120)
+    fig.savefig(os.path.join(a.outdir, f"{a.name}_speedup.png"), dpi=120)
 
 
 def main():
@@ -129,6 +132,7 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--count", type=float, default=1e6)
     ap.add_argument("--objects", default="tsv-half-32,tsv-half-64,tsv-half-128")
+    ap.add_argument("--name", default="dihedral", help="report name: NAME.md, NAME*.csv, NAME_speedup.png")
     a = ap.parse_args()
     known = {f"tsv-half-{n}": n for n in g3.TSVS} | {f"tsv-{n}": n for n in g3.TSVS}
     wanted = a.objects.split(",")
@@ -160,12 +164,12 @@ def main():
                               f"{r['seconds_generation']:.3f} s", flush=True)
     wall = time.perf_counter() - started
     os.makedirs(a.outdir, exist_ok=True)
-    with open(os.path.join(a.outdir, "dihedral.csv"), "w", newline="") as f:
+    with open(os.path.join(a.outdir, f"{a.name}.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
     summary = summarise(rows, objects)
-    with open(os.path.join(a.outdir, "dihedral_summary.csv"), "w", newline="") as f:
+    with open(os.path.join(a.outdir, f"{a.name}_summary.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(summary[0].keys()))
         w.writeheader()
         w.writerows(summary)
