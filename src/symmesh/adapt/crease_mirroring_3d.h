@@ -33,7 +33,7 @@ namespace symmesh::adapt::work {
 /// bisection: mirroring across their mid-plane carried points from layer to layer of the TSV
 /// liners (related faces face the next layer), and the 8-TSV slice hit the refinement cap.
 ///
-/// Pairs in a wedge between 60° and 90° (-1/2 <= n1 . n2 < 0) are kept apart in `near_right`:
+/// Pairs in a wedge between 60° and 90° (-1/2 <= n1 . n2 < -1e-9) are kept apart in `near_right`:
 /// Delaunay refinement in 3D is guaranteed to end only where boundary planes meet at 90° or more,
 /// and below that it may ping-pong too (the 87.2° crease of the tsv-half-32 oxide, where the mirror
 /// face meets the liner, bisected edges down to 1e-6 until TetGen gave up), but mirroring at every
