@@ -133,7 +133,7 @@ def main():
     ap.add_argument("symmesh")
     ap.add_argument("outdir")
     ap.add_argument("--repeats", type=int, default=3)
-    ap.add_argument("--counts", default="1e4,1e5,1e6,3e6")
+    ap.add_argument("--counts", default="1e4,1e5,1e6")
     ap.add_argument("--note", default="", help="one more line for the report, e.g. what else ran")
     ap.add_argument("--no-gmsh", action="store_true", help="leave the Gmsh 3D peer out")
     ap.add_argument("--no-huge", action="store_true", help="leave the 10^8 run out")
