@@ -1,7 +1,8 @@
 // The outlier repair after TetGen (spec/generation.md#outlier-repair): a flip that helps is
-// made unless its facet is an input triangle, a point TetGen added moves and a surface point
-// never does, and on generated templated meshes the repair only improves the worst measures and
-// keeps the mesh certified and conforming.
+// made unless its facet is an input triangle, a point TetGen added moves or is taken out (its
+// star tetrahedralized anew, within the volume bound) and a surface point never is, and on
+// generated templated meshes the repair only improves the worst measures and keeps the mesh
+// certified and conforming.
 #include <gtest/gtest.h>
 
 #include "symmesh/gen/outlier_repair.h"
@@ -106,17 +107,8 @@ void cube_with_low_centre(SurfaceInput& s, TetrahedralMeshOutput& m) {
   }
 }
 
-TEST(OutlierRepair, MovesAnAddedPointButNeverASurfacePoint) {
-  SurfaceInput s;
-  TetrahedralMeshOutput m;
-  cube_with_low_centre(s, m);
-  const auto r = gen::repair_outliers(s, m, gen::OutlierBounds{});
-  EXPECT_GE(r.outliers_before, 2u);
-  EXPECT_LT(r.outliers_after, r.outliers_before);
-  EXPECT_GE(r.moves, 1u);
-  ASSERT_EQ(m.points.size(), 9u);
-  for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(m.points[v], s.points[v]);
-  EXPECT_GT(m.points[8][2], 0.02);
+/// The cells tile the unit cube: positive, volume 1, the surface kept.
+void expect_cube_tiled(const SurfaceInput& s, const TetrahedralMeshOutput& m) {
   double volume = 0;
   for (const auto& c : m.tetrahedra) {
     EXPECT_GT(signed_volume(m, c), 0);
@@ -126,12 +118,58 @@ TEST(OutlierRepair, MovesAnAddedPointButNeverASurfacePoint) {
   EXPECT_FALSE(gen::boundary_mismatch(s, m).has_value());
 }
 
+TEST(OutlierRepair, RemovesAnAddedPointWhoseStarHasABetterTetrahedralization) {
+  SurfaceInput s;
+  TetrahedralMeshOutput m;
+  cube_with_low_centre(s, m);
+  const auto r = gen::repair_outliers(s, m, gen::OutlierBounds{});
+  EXPECT_EQ(r.removals, 1u);
+  EXPECT_EQ(r.outliers_after, 0u);
+  ASSERT_EQ(m.points.size(), 8u); // the point taken out is gone, the surface points stay
+  for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(m.points[v], s.points[v]);
+  EXPECT_LE(m.tetrahedra.size(), 6u); // the cube on its corners: five or six cells
+  expect_cube_tiled(s, m);
+}
+
+TEST(OutlierRepair, NeverRemovesASurfacePoint) {
+  // Dropped hypothesis: the low centre is an input point (as a template's surface point is).
+  SurfaceInput s;
+  TetrahedralMeshOutput m;
+  cube_with_low_centre(s, m);
+  s.points.push_back(m.points[8]);
+  const auto r = gen::repair_outliers(s, m, gen::OutlierBounds{});
+  EXPECT_EQ(r.removals + r.moves, 0u);
+  ASSERT_EQ(m.points.size(), 9u);
+  EXPECT_EQ(m.points[8], s.points[8]);
+}
+
+TEST(OutlierRepair, MovesAnAddedPointButNeverASurfacePoint) {
+  // A volume bound below the cube's cells on its corners (at least 1/6) rules the removal out.
+  SurfaceInput s;
+  TetrahedralMeshOutput m;
+  cube_with_low_centre(s, m);
+  gen::OutlierBounds bounds;
+  bounds.max_volume = 0.15;
+  const auto r = gen::repair_outliers(s, m, bounds);
+  EXPECT_EQ(r.removals, 0u);
+  EXPECT_GE(r.outliers_before, 2u);
+  EXPECT_LT(r.outliers_after, r.outliers_before);
+  EXPECT_GE(r.moves, 1u);
+  ASSERT_EQ(m.points.size(), 9u);
+  for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(m.points[v], s.points[v]);
+  EXPECT_GT(m.points[8][2], 0.02);
+  expect_cube_tiled(s, m);
+}
+
 TEST(OutlierRepair, RefusesBadBoundsAndAForeignMesh) {
   SurfaceInput s;
   TetrahedralMeshOutput m;
   bipyramid(s, m, false);
   gen::OutlierBounds b;
   b.radius_edge = 0.5;
+  EXPECT_THROW(gen::repair_outliers(s, m, b), std::invalid_argument);
+  b = gen::OutlierBounds{};
+  b.max_volume = 0;
   EXPECT_THROW(gen::repair_outliers(s, m, b), std::invalid_argument);
   m.region.pop_back();
   EXPECT_THROW(gen::repair_outliers(s, m, gen::OutlierBounds{}), std::invalid_argument);

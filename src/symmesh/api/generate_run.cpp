@@ -247,6 +247,7 @@ nlohmann::ordered_json generation_report(const gen::GenerationResult& r, const R
                              {"template_cells_after", r.outliers_after},
                              {"flips", r.repair_flips},
                              {"moves", r.repair_moves},
+                             {"removals", r.repair_removals},
                              {"seconds_within_template_meshing", r.timings.outlier_repair}};
   }
   j["lemma_4_2_holds"] = r.lemma_4_2_holds;

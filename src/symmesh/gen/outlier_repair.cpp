@@ -10,6 +10,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -36,6 +37,7 @@ public:
     }
     std::sort(constrained_.begin(), constrained_.end());
     alive_.assign(m.tetrahedra.size(), 1);
+    removed_.assign(m.points.size(), 0);
     build_incidence();
   }
 
@@ -61,6 +63,9 @@ public:
         if (!alive_[t] || !is_outlier(m_.tetrahedra[t])) continue;
         if (flip_around(t)) {
           ++r.flips;
+          ++changes;
+        } else if (remove_a_vertex(t)) {
+          ++r.removals;
           ++changes;
         } else if (move_a_vertex(t)) {
           ++r.moves;
@@ -91,6 +96,7 @@ private:
   std::size_t fixed_;
   std::vector<std::array<std::size_t, 3>> constrained_;
   std::vector<char> alive_;
+  std::vector<char> removed_; ///< per point: an added point the repair took out
   // Vertex-to-cell incidence: the cells of the input (CSR) plus the cells a change gave the
   // vertex since; an entry is stale when its cell no longer has the vertex (checked on use).
   std::vector<std::size_t> first_, cells_;
@@ -352,10 +358,160 @@ private:
     return false;
   }
 
+  static double volume(const Point& a, const Point& b, const Point& c, const Point& d) {
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+            u[2] * (v[0] * w[1] - v[1] * w[0])) /
+           6;
+  }
+
+  using Face = std::array<std::size_t, 3>;
+
+  /// The face of t opposite t[i], ordered so that (face, t[i]) has t's orientation.
+  static Face face_towards(const Tet& t, int i) {
+    Face f{};
+    for (int j = 0, n = 0; j < 4; ++j)
+      if (j != i) f[std::size_t(n++)] = t[std::size_t(j)];
+    if ((3 - i) % 2 == 1) std::swap(f[0], f[1]); // moving t[i] last took 3 - i transpositions
+    return f;
+  }
+
+  static Face key(Face f) {
+    std::sort(f.begin(), f.end());
+    return f;
+  }
+
+  /// A search for a tetrahedralization of a cavity without its inner point: every cell joins an
+  /// open face (its open side towards the cavity still to fill) to a cavity vertex.
+  struct CavitySearch {
+    const Repair& r;
+    const std::vector<std::size_t>& vertices;
+    Worst before, best_worst;
+    std::vector<Tet> chosen, best;
+    std::map<Face, Face> open; ///< key -> the face oriented with its open side positive
+    std::size_t nodes = 0;
+
+    void run() {
+      if (open.empty()) {
+        const Worst w = r.worst(chosen);
+        if (r.better(before, w) && (best.empty() || w.radius_edge < best_worst.radius_edge ||
+                                    (w.radius_edge == best_worst.radius_edge &&
+                                     w.min_dihedral_deg > best_worst.min_dihedral_deg))) {
+          best = chosen;
+          best_worst = w;
+        }
+        return;
+      }
+      const Face f = open.begin()->second;
+      for (std::size_t x : vertices) {
+        if (++nodes > kMaxNodes) return;
+        if (x == f[0] || x == f[1] || x == f[2]) continue;
+        const Tet n{f[0], f[1], f[2], x};
+        if (r.orientation(n) <= 0 || !acceptable(n)) continue;
+        // The other three faces of n close an open face facing them or open up.
+        std::vector<std::pair<Face, Face>> closed, opened;
+        bool fits = true;
+        for (int i = 0; i < 3 && fits; ++i) {
+          Face g = face_towards(n, i);
+          std::swap(g[0], g[1]); // its open side is outside n
+          const auto it = open.find(key(g));
+          if (it == open.end()) {
+            opened.emplace_back(key(g), g);
+          } else if (r.orientation({it->second[0], it->second[1], it->second[2], n[i]}) > 0) {
+            closed.emplace_back(*it); // the open face looks into n: shared, both sides filled
+          } else {
+            fits = false; // two cells on the same side of a face
+          }
+        }
+        if (!fits) continue;
+        const auto first = *open.begin();
+        open.erase(open.begin());
+        for (const auto& c : closed) open.erase(c.first);
+        for (const auto& o : opened) open.insert(o);
+        chosen.push_back(n);
+        run();
+        chosen.pop_back();
+        for (const auto& o : opened) open.erase(o.first);
+        for (const auto& c : closed) open.insert(c);
+        open.insert(first);
+      }
+    }
+
+    bool acceptable(const Tet& n) const {
+      const Worst w = r.worst({n});
+      if (w.radius_edge > std::max(before.radius_edge, r.limit_.radius_edge)) return false;
+      if (w.min_dihedral_deg < std::min(before.min_dihedral_deg, r.limit_.min_dihedral_deg))
+        return false;
+      if (!best.empty() && w.radius_edge >= best_worst.radius_edge) return false;
+      const auto& p = r.m_.points;
+      return volume(p[n[0]], p[n[1]], p[n[2]], p[n[3]]) <= r.b_.max_volume;
+    }
+  };
+  static constexpr std::size_t kMaxNodes = 20000;
+
+  /// Takes out a vertex of t that TetGen added inside the domain (in a domain thinner than the
+  /// size, such a point is what makes the flat cells, and no move of it helps). Its star, a
+  /// closed ball in one region, is tetrahedralized anew on its link vertices by a bounded
+  /// search: positive cells whose faces pair up inside and give exactly the link's oriented
+  /// triangles outside; for such a chain the link winds once around every point of the star,
+  /// so positive cells cover it exactly once, a tiling that keeps the link as faces. The best
+  /// replacement (smallest worst ratio, then largest smallest dihedral angle) wins if it is
+  /// better; no cell may exceed the volume bound TetGen was given, so the size request holds.
+  bool remove_a_vertex(std::size_t t) {
+    const Tet c = m_.tetrahedra[t];
+    for (std::size_t v : c) {
+      if (v < fixed_) continue; // a surface point is never taken out
+      const auto star = cells_with({v});
+      std::vector<Tet> old;
+      std::vector<std::size_t> link;
+      bool one_region = true;
+      for (std::size_t u : star) {
+        one_region = one_region && m_.region[u] == m_.region[star[0]];
+        old.push_back(m_.tetrahedra[u]);
+        for (std::size_t w : m_.tetrahedra[u])
+          if (w != v) link.push_back(w);
+      }
+      if (star.size() < 4 || !one_region) continue;
+      std::sort(link.begin(), link.end());
+      link.erase(std::unique(link.begin(), link.end()), link.end());
+      CavitySearch s{*this, link, worst(old), {}, {}, {}, {}, 0};
+      for (const Tet& o : old) {
+        const int i = int(std::find(o.begin(), o.end(), v) - o.begin());
+        const Face f = face_towards(o, i);
+        s.open.emplace(key(f), f);
+      }
+      s.run();
+      if (s.best.empty()) continue;
+      for (std::size_t k = 0; k < std::max(star.size(), s.best.size()); ++k) {
+        if (k < star.size() && k < s.best.size())
+          replace(star[k], s.best[k]);
+        else if (k < star.size())
+          alive_[star[k]] = 0;
+        else
+          add(s.best[k], m_.region[star[0]]);
+      }
+      removed_[v] = 1;
+      return true;
+    }
+    return false;
+  }
+
+  /// Drops dead cells and the points taken out (only added points: the surface points keep
+  /// their ids, which the SVB refers to).
   void compact() {
+    std::vector<std::size_t> id(m_.points.size());
+    std::size_t kept = 0;
+    for (std::size_t v = 0; v < m_.points.size(); ++v) {
+      id[v] = kept;
+      if (!removed_[v]) m_.points[kept++] = m_.points[v];
+    }
+    m_.points.resize(kept);
     std::size_t n = 0;
     for (std::size_t t = 0; t < m_.tetrahedra.size(); ++t) {
       if (!alive_[t]) continue;
+      for (std::size_t& v : m_.tetrahedra[t]) v = id[v];
       m_.tetrahedra[n] = m_.tetrahedra[t];
       m_.region[n] = m_.region[t];
       ++n;
@@ -368,8 +524,9 @@ private:
 
 OutlierRepairReport repair_outliers(const SurfaceInput& surface, TetrahedralMeshOutput& m,
                                     const OutlierBounds& b) {
-  if (!(b.radius_edge >= 1) || !(b.min_dihedral_deg >= 0))
-    throw std::invalid_argument("outlier bounds: radius-edge below 1 or negative dihedral angle");
+  if (!(b.radius_edge >= 1) || !(b.min_dihedral_deg >= 0) || !(b.max_volume > 0))
+    throw std::invalid_argument("outlier bounds: radius-edge below 1, negative dihedral angle or "
+                                "volume bound not positive");
   if (m.region.size() != m.tetrahedra.size() || m.points.size() < surface.points.size())
     throw std::invalid_argument("outlier repair: not a mesh of this surface");
   return Repair(surface, m, b).run();

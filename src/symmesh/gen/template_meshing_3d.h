@@ -20,18 +20,21 @@ inline TetrahedralMeshOutput mesh_and_repair(const SurfaceInput& s,
   auto out = mesh_domain_3(s, p);
   if (!o.repair_outliers) return out;
   const auto t0 = Clock::now();
-  const auto repair = repair_outliers(s, out, OutlierBounds{});
+  OutlierBounds bounds;
+  if (p.size > 0) bounds.max_volume = volume_bound(p.size);
+  const auto repair = repair_outliers(s, out, bounds);
   r.timings.outlier_repair += seconds_since(t0);
   r.outliers_before += repair.outliers_before;
   r.outliers_after += repair.outliers_after;
   r.repair_flips += repair.flips;
   r.repair_moves += repair.moves;
+  r.repair_removals += repair.removals;
   if (o.progress && repair.outliers_before > 0)
     o.progress->message("outlier repair: " + std::to_string(repair.outliers_before) + " -> " +
                         std::to_string(repair.outliers_after) +
                         " tetrahedra beyond radius-edge 1.414 or below 10 degrees (" +
                         std::to_string(repair.flips) + " flips, " + std::to_string(repair.moves) +
-                        " moves)");
+                        " moves, " + std::to_string(repair.removals) + " removals)");
   return out;
 }
 

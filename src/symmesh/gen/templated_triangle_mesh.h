@@ -81,7 +81,8 @@ struct GenerationResult {
   std::size_t merge_insertions = 0, merge_rounds = 0, merge_merged = 0, merge_moves = 0;
   /// 3D outlier repair (spec/generation.md#outlier-repair), summed over the TetGen calls: cells
   /// beyond its bounds before and after it, and its flips and vertex moves.
-  std::size_t outliers_before = 0, outliers_after = 0, repair_flips = 0, repair_moves = 0;
+  std::size_t outliers_before = 0, outliers_after = 0, repair_flips = 0, repair_moves = 0,
+              repair_removals = 0;
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):
