@@ -119,13 +119,15 @@ generate tsv8_bpp "$TMP/tsv8_input.json" "$TSV_VOLUME" "$TSV_SURFACE" bpp vtu
 cmp -s "$TMP/tsv8.vtu" "$TMP/tsv8_bpp.vtu" && pass "TSV: rotational and bpp write the same bytes" \
   || fail "TSV: rotational and bpp differ"
 # The outlier repair after TetGen (spec/generation.md#outlier-repair) is on by default and
-# reported; --no-repair keeps TetGen's tetrahedra, and the repaired mesh is no worse than them.
+# reported; --no-repair keeps TetGen's tetrahedra, and the repaired mesh is no worse than them
+# (the count of cells beyond the bounds need not fall: a 2-3 flip may make three such cells of two
+# worse ones; the cells below the dihedral bound do here).
 if "$BIN" generate "$TMP/tsv8_input.json" --size 0.15 -o "$TMP/tsv8_plain.vtu" \
     --report "$TMP/tsv8_plain.json" --quiet --no-repair; then
   $PY -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); \
 o=a['outlier_repair']; qa=a['quality']; qb=b['quality']; \
-assert 'outlier_repair' not in b and o['template_cells_after'] < o['template_cells_before'] and \
-o['flips'] + o['moves'] > 0 and qa['min_dihedral_deg'] >= qb['min_dihedral_deg'] and \
+assert 'outlier_repair' not in b and o['template_cells_before'] > 0 and \
+o['flips'] + o['moves'] + o['removals'] > 0 and qa['min_dihedral_deg'] >= qb['min_dihedral_deg'] and \
 qa['max_radius_edge_ratio'] <= qb['max_radius_edge_ratio'] and \
 qa['below_dihedral_bound'] < qb['below_dihedral_bound'], (o, qa, qb)" \
     "$TMP/tsv8.json" "$TMP/tsv8_plain.json" \

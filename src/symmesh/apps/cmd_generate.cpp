@@ -126,10 +126,11 @@ void add_generate(CLI::App& app, int& exit_code) {
   cmd->add_option("--templated", o->templated,
                   "also write the templated mesh (.tmesh, spec/outputs.md#tmesh)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines on stderr");
-  cmd->add_flag("!--no-repair", o->run.repair_outliers,
-                "3D: keep TetGen's tetrahedra as they are (by default the few beyond "
-                "radius-edge 1.414 or below a 10 degree dihedral angle are repaired by flips and "
-                "moves of TetGen's interior points; spec/generation.md#outlier-repair)");
+  cmd->add_flag(
+      "!--no-repair", o->run.repair_outliers,
+      "3D: keep TetGen's tetrahedra as they are (by default the few beyond "
+      "radius-edge 1.414 or below a 10 degree dihedral angle are repaired by flips, "
+      "removals and moves of TetGen's interior points; spec/generation.md#outlier-repair)");
   cmd->add_option("--tetgen-dihedral", o->run.tetgen_dihedral,
                   "3D: the smallest dihedral angle in degrees TetGen refines towards (its -q/D, "
                   "in every TetGen call, templates and whole geometry alike; 0: none, TetGen's "

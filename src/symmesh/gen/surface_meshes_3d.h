@@ -243,6 +243,100 @@ std::vector<std::array<std::size_t, 2>> facet_boundary(const core::BoundarySubdi
   return segments;
 }
 
+/// Two triangles (a, b, c), (b, a, d) of a face mesh are a tie — their four points on one circle
+/// to the doubles the mesher worked in (its Delaunay choice was made in them), so either
+/// diagonal is Delaunay — and the other diagonal makes two triangles of the same orientation.
+inline bool tied_diagonals(const std::array<std::array<double, 2>, 4>& q) {
+  double m[3][3], scale = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double ds = q[std::size_t(i)][0] - q[3][0], dt = q[std::size_t(i)][1] - q[3][1];
+    m[i][0] = ds;
+    m[i][1] = dt;
+    m[i][2] = ds * ds + dt * dt;
+    scale = std::max({scale, std::abs(ds), std::abs(dt)});
+  }
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  const double s2 = scale * scale;
+  if (!(std::abs(det) <= 1e-8 * s2 * s2)) return false;
+  const auto orient = [&](int i, int j, int k) {
+    const auto &p = q[std::size_t(i)], &r = q[std::size_t(j)], &t = q[std::size_t(k)];
+    return (r[0] - p[0]) * (t[1] - p[1]) - (r[1] - p[1]) * (t[0] - p[0]);
+  };
+  // Strictly convex: c and d clearly on either side of ab, and a, b on either side of cd.
+  const double o = orient(0, 1, 2), tol = 1e-6 * s2;
+  const double o1 = orient(2, 0, 3), o2 = orient(3, 1, 2);
+  return std::abs(o) > tol && o * o1 > 0 && o * o2 > 0 && std::abs(o1) > tol && std::abs(o2) > tol;
+}
+
+/// Gives every tie of a face mesh (tied_diagonals) the diagonal through the smallest of its four
+/// points in one order of the template's points: lexicographic on their coordinates, two
+/// coordinates within 1e-7 of the quad's extent counting as equal (exactly equal ones differ by
+/// their rounding only). A thin face is a strip of rectangles, all ties, where the mesher's choice
+/// follows its frame; two faces of a thin column meshed apart (the two cut faces of a
+/// half-slice) could then wind the column's side diagonals around it like a Schönhardt prism,
+/// which no tetrahedralization without an interior point fills — TetGen adds one, and its cells
+/// are flat. Diagonals through the smallest point follow one order of the column's edges, which
+/// never winds (spec/generation.md#surface-meshes). Any diagonal of a tie keeps the mesh valid
+/// and conforming; this only chooses.
+template <class FT>
+void canonical_ties(FacetMesh<FT>& m, const std::vector<P3<FT>>& template_exact,
+                    const std::vector<std::array<double, 2>>& q) {
+  const std::size_t nb = m.boundary_ids.size();
+  std::vector<std::array<double, 3>> x(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const P3<FT>& p = i < nb ? template_exact[m.boundary_ids[i]] : m.interior[i - nb];
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto [lo, hi] = CGAL::to_interval(p[c]);
+      x[i][c] = lo / 2 + hi / 2;
+    }
+  }
+  auto& tris = m.triangles;
+  // Directed edge -> (triangle, position of the edge's first point).
+  std::map<std::array<std::size_t, 2>, std::pair<std::size_t, int>> half;
+  const auto index = [&](std::size_t t) {
+    for (int i = 0; i < 3; ++i)
+      half[{tris[t][std::size_t(i)], tris[t][std::size_t((i + 1) % 3)]}] = {t, i};
+  };
+  for (std::size_t t = 0; t < tris.size(); ++t) index(t);
+  for (int pass = 0; pass < 4; ++pass) {
+    bool changed = false;
+    for (std::size_t t = 0; t < tris.size(); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t a = tris[t][std::size_t(i)], b = tris[t][std::size_t((i + 1) % 3)];
+        const std::size_t c = tris[t][std::size_t((i + 2) % 3)];
+        const auto it = half.find({b, a});
+        if (it == half.end()) continue; // a boundary segment
+        const auto [u, j] = it->second;
+        const std::size_t d = tris[u][std::size_t((j + 2) % 3)];
+        if (!tied_diagonals({q[a], q[b], q[c], q[d]})) continue;
+        double extent = 0;
+        for (std::size_t v : {b, c, d})
+          for (std::size_t k = 0; k < 3; ++k)
+            extent = std::max(extent, std::abs(x[v][k] - x[a][k]));
+        const auto less = [&](std::size_t v, std::size_t w) {
+          for (std::size_t k = 0; k < 3; ++k)
+            if (std::abs(x[v][k] - x[w][k]) > 1e-7 * extent) return x[v][k] < x[w][k];
+          return v < w;
+        };
+        const std::size_t lo = std::min({a, b, c, d}, less);
+        if (lo == a || lo == b) continue;
+        // (a, b, c) and (b, a, d) become (c, a, d) and (d, b, c), of the same orientation.
+        half.erase({a, b});
+        half.erase({b, a});
+        tris[t] = {c, a, d};
+        tris[u] = {d, b, c};
+        index(t);
+        index(u);
+        changed = true;
+        break;
+      }
+    }
+    if (!changed) break;
+  }
+}
+
 /// \p once: the mesh is the only one made of face f's class (to_plane_once), not one of several
 /// meshes of congruent faces that are compared later (the merge method: to_plane).
 template <class FT>
@@ -264,6 +358,7 @@ FacetMesh<FT> mesh_facet(const core::BoundarySubdivision<FT, 3>& sd, const Surfa
     out.interior.push_back(out.plane->at(out.st.back()));
   }
   out.triangles = m.triangles;
+  if (once) canonical_ties(out, tb.exact, m.points);
   return out;
 }
 

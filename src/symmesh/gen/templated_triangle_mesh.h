@@ -44,9 +44,9 @@ struct GenerationOptions {
   /// of neighbouring instances, condition (i) by a sweep) instead of mapping by mapping; slower,
   /// the independent check the tests compare with (spec/lemmas.md#lemma-4-2-surface-meshes).
   bool direct_certificate = false;
-  /// 3D: the outlier repair after TetGen (spec/generation.md#outlier-repair: flips and moves of
-  /// TetGen's interior points on the tetrahedra beyond radius-edge √2 or below a 10° dihedral
-  /// angle; the boundary is not touched).
+  /// 3D: the outlier repair after TetGen (spec/generation.md#outlier-repair: flips, point removals
+  /// and moves of TetGen's interior points on the tetrahedra beyond radius-edge √2 or below a 10°
+  /// dihedral angle; the boundary is not touched).
   bool repair_outliers = true;
   /// 3D: TetGen's -q/D, the smallest dihedral angle it refines towards, in every TetGen call of
   /// the 3D methods (templates and the whole geometry alike; 0: none) — spec/generation.md#mesher-3
