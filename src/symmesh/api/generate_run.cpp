@@ -242,6 +242,13 @@ nlohmann::ordered_json generation_report(const gen::GenerationResult& r, const R
   } else {
     j["quality"] = tetrahedron_quality_json(r.templated.templated);
     if (r.method != "gmsh") j["tetgen_min_dihedral_deg"] = o.tetgen_dihedral;
+    // Which Gmsh mesh this is: optimized (Gmsh's default), or the retry after its optimizer
+    // failed (gmsh_mesher.h).
+    if (r.method == "gmsh")
+      j["gmsh_optimizer"] =
+          r.gmsh_optimizer_failure.empty()
+              ? nlohmann::ordered_json{{"optimized", true}}
+              : nlohmann::ordered_json{{"optimized", false}, {"failure", r.gmsh_optimizer_failure}};
     if (o.repair_outliers && r.method != "gmsh")
       j["outlier_repair"] = {{"template_cells_before", r.outliers_before},
                              {"template_cells_after", r.outliers_after},

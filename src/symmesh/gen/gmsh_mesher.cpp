@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -171,6 +172,107 @@ GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& in, double size) {
   return out;
 }
 
+namespace {
+
+/// Gmsh's own failure inside generate(3) (its message), as opposed to a check of ours.
+struct GmshInternalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The node tags of each discrete surface's triangles, by the regions it bounds (the second
+/// `outside` for an outer boundary).
+using SurfaceNodes = std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>>;
+
+/// One Gmsh session: the discrete model of the surfaces, generate(3) with or without Gmsh's
+/// optimizer, the tetrahedra read back. \p start: when the model building began (the time
+/// measured is from there).
+GmshTetrahedra mesh_discrete_volumes(const ClosedSurfaces& in, double size,
+                                     const SurfaceNodes& surface_nodes, bool optimize,
+                                     std::chrono::steady_clock::time_point start) {
+  constexpr std::size_t outside = std::size_t(-1);
+  GmshSession session;
+  std::vector<int> volumes;
+  try {
+    std::vector<std::vector<int>> bounding(in.regions.size());
+    std::vector<int> surfaces;
+    for (const auto& [pair, nodes] : surface_nodes) {
+      surfaces.push_back(gmsh::model::addDiscreteEntity(2));
+      bounding[pair.first].push_back(surfaces.back());
+      if (pair.second != outside) bounding[pair.second].push_back(surfaces.back());
+    }
+    // Node k of the input is tag k + 1, classified on its surface(s) by reclassifyNodes.
+    std::vector<std::size_t> tags(in.points.size());
+    std::vector<double> coords;
+    coords.reserve(3 * in.points.size());
+    for (std::size_t k = 0; k < in.points.size(); ++k) {
+      tags[k] = k + 1;
+      coords.insert(coords.end(), in.points[k].begin(), in.points[k].end());
+    }
+    gmsh::model::mesh::addNodes(2, surfaces.at(0), tags, coords);
+    std::size_t k = 0;
+    for (const auto& [pair, nodes] : surface_nodes)
+      gmsh::model::mesh::addElementsByType(surfaces[k++], 2, {}, nodes); // 2: 3-node triangle
+    gmsh::model::mesh::reclassifyNodes();
+    gmsh::vectorpair volume_dim_tags;
+    for (std::size_t r = 0; r < in.regions.size(); ++r) {
+      volumes.push_back(gmsh::model::addDiscreteEntity(3, -1, bounding[r]));
+      volume_dim_tags.emplace_back(3, volumes.back());
+    }
+    // A discrete volume is meshed only once it has a "geometry" (Gmsh's documented way:
+    // createGeometry, which for a volume only marks it meshable). The surfaces get none, so their
+    // triangles stay as given.
+    gmsh::model::mesh::createGeometry(volume_dim_tags);
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay (-algo del3d)
+    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+    // Keep the node tags: input point k stays tag k + 1 (Gmsh renumbers after meshing otherwise).
+    gmsh::option::setNumber("Mesh.Renumber", 0);
+    gmsh::option::setNumber("Mesh.Optimize", optimize ? 1 : 0);
+    gmsh::model::mesh::generate(3);
+  } catch (const MeshingError&) {
+    throw;
+  } catch (...) {
+    std::string why;
+    gmsh::logger::getLastError(why);
+    throw GmshInternalError(why.empty() ? std::string("Gmsh failed") : why);
+  }
+  GmshTetrahedra out;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.nodes = in.points;
+  std::vector<std::size_t> tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
+  // Tag -> node index: Gmsh numbers its own nodes after the input's (Mesh.Renumber = 0 keeps
+  // them), so the tags are about dense.
+  std::vector<std::size_t> index(tags.empty() ? 0
+                                              : *std::max_element(tags.begin(), tags.end()) + 1);
+  std::vector<bool> seen(in.points.size(), false);
+  for (std::size_t k = 0; k < tags.size(); ++k) {
+    const std::array<double, 3> q{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
+    if (tags[k] >= 1 && tags[k] <= in.points.size()) {
+      if (q != in.points[tags[k] - 1])
+        throw MeshingError("Gmsh baseline: Gmsh moved input point " + std::to_string(tags[k] - 1));
+      seen[tags[k] - 1] = true;
+      index[tags[k]] = tags[k] - 1;
+      continue;
+    }
+    index[tags[k]] = out.nodes.size();
+    out.nodes.push_back(q);
+  }
+  if (std::find(seen.begin(), seen.end(), false) != seen.end())
+    throw MeshingError("Gmsh baseline: Gmsh dropped an input point");
+  out.tetrahedra.resize(in.regions.size());
+  for (std::size_t r = 0; r < in.regions.size(); ++r) {
+    std::vector<std::size_t> elements, nodes;
+    gmsh::model::mesh::getElementsByType(4, elements, nodes, volumes[r]); // 4: 4-node tetrahedron
+    for (std::size_t k = 0; k + 3 < nodes.size(); k += 4)
+      out.tetrahedra[r].push_back({index.at(nodes[k]), index.at(nodes[k + 1]),
+                                   index.at(nodes[k + 2]), index.at(nodes[k + 3])});
+  }
+  return out;
+}
+
+} // namespace
+
 GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& in, double size) {
   const auto start = std::chrono::steady_clock::now();
   if (!(size > 0) || !std::isfinite(size)) throw MeshingError("Gmsh baseline: size must be > 0");
@@ -209,7 +311,7 @@ GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& in, double size
   // volumes then share their interface surfaces, hence their nodes there. The surfaces' mesh is
   // the input triangles; a discrete surface without a parametrization is never remeshed.
   constexpr std::size_t outside = std::size_t(-1);
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> surface_nodes;
+  SurfaceNodes surface_nodes;
   for (const auto& key : order) {
     const auto& s = sides.at(key);
     const auto pair = s.regions.size() == 1 ? std::make_pair(s.regions[0], outside)
@@ -218,82 +320,16 @@ GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& in, double size
     auto& nodes = surface_nodes[pair];
     for (std::size_t v : s.triangle) nodes.push_back(v + 1); // Gmsh tags start at 1
   }
-  GmshSession session;
-  std::vector<int> volumes;
+  // Gmsh's optimizer may fail on its own data structures (see gmsh_mesher.h); the peer then
+  // falls back to the unoptimized Delaunay mesh and says so.
   try {
-    std::vector<std::vector<int>> bounding(in.regions.size());
-    std::vector<int> surfaces;
-    for (const auto& [pair, nodes] : surface_nodes) {
-      surfaces.push_back(gmsh::model::addDiscreteEntity(2));
-      bounding[pair.first].push_back(surfaces.back());
-      if (pair.second != outside) bounding[pair.second].push_back(surfaces.back());
-    }
-    // Node k of the input is tag k + 1, classified on its surface(s) by reclassifyNodes.
-    std::vector<std::size_t> tags(in.points.size());
-    std::vector<double> coords;
-    coords.reserve(3 * in.points.size());
-    for (std::size_t k = 0; k < in.points.size(); ++k) {
-      tags[k] = k + 1;
-      coords.insert(coords.end(), in.points[k].begin(), in.points[k].end());
-    }
-    gmsh::model::mesh::addNodes(2, surfaces.at(0), tags, coords);
-    std::size_t k = 0;
-    for (const auto& [pair, nodes] : surface_nodes)
-      gmsh::model::mesh::addElementsByType(surfaces[k++], 2, {}, nodes); // 2: 3-node triangle
-    gmsh::model::mesh::reclassifyNodes();
-    gmsh::vectorpair volume_dim_tags;
-    for (std::size_t r = 0; r < in.regions.size(); ++r) {
-      volumes.push_back(gmsh::model::addDiscreteEntity(3, -1, bounding[r]));
-      volume_dim_tags.emplace_back(3, volumes.back());
-    }
-    // A discrete volume is meshed only once it has a "geometry" (Gmsh's documented way:
-    // createGeometry, which for a volume only marks it meshable). The surfaces get none, so their
-    // triangles stay as given.
-    gmsh::model::mesh::createGeometry(volume_dim_tags);
-    gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay (-algo del3d)
-    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
-    // Keep the node tags: input point k stays tag k + 1 (Gmsh renumbers after meshing otherwise).
-    gmsh::option::setNumber("Mesh.Renumber", 0);
-    gmsh::model::mesh::generate(3);
-  } catch (const MeshingError&) {
-    throw;
-  } catch (...) {
-    throw_gmsh_error();
+    return mesh_discrete_volumes(in, size, surface_nodes, true, start);
+  } catch (const GmshInternalError& e) {
+    auto out =
+        mesh_discrete_volumes(in, size, surface_nodes, false, std::chrono::steady_clock::now());
+    out.optimizer_failure = e.what();
+    return out;
   }
-  GmshTetrahedra out;
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out.nodes = in.points;
-  std::vector<std::size_t> tags;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
-  // Tag -> node index: Gmsh numbers its own nodes after the input's (Mesh.Renumber = 0 keeps
-  // them), so the tags are about dense.
-  std::vector<std::size_t> index(tags.empty() ? 0
-                                              : *std::max_element(tags.begin(), tags.end()) + 1);
-  std::vector<bool> seen(in.points.size(), false);
-  for (std::size_t k = 0; k < tags.size(); ++k) {
-    const std::array<double, 3> q{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
-    if (tags[k] >= 1 && tags[k] <= in.points.size()) {
-      if (q != in.points[tags[k] - 1])
-        throw MeshingError("Gmsh baseline: Gmsh moved input point " + std::to_string(tags[k] - 1));
-      seen[tags[k] - 1] = true;
-      index[tags[k]] = tags[k] - 1;
-      continue;
-    }
-    index[tags[k]] = out.nodes.size();
-    out.nodes.push_back(q);
-  }
-  if (std::find(seen.begin(), seen.end(), false) != seen.end())
-    throw MeshingError("Gmsh baseline: Gmsh dropped an input point");
-  out.tetrahedra.resize(in.regions.size());
-  for (std::size_t r = 0; r < in.regions.size(); ++r) {
-    std::vector<std::size_t> elements, nodes;
-    gmsh::model::mesh::getElementsByType(4, elements, nodes, volumes[r]); // 4: 4-node tetrahedron
-    for (std::size_t k = 0; k + 3 < nodes.size(); k += 4)
-      out.tetrahedra[r].push_back({index.at(nodes[k]), index.at(nodes[k + 1]),
-                                   index.at(nodes[k + 2]), index.at(nodes[k + 3])});
-  }
-  return out;
 }
 
 } // namespace symmesh::gen

@@ -21,6 +21,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace symmesh::gen {
@@ -57,8 +58,12 @@ struct GmshTetrahedra {
   /// Per region (same order as the input): tetrahedra in node indices, Gmsh's orientation.
   std::vector<std::vector<std::array<std::size_t, 4>>> tetrahedra;
   /// Building the Gmsh model and generate(3), measured in the module: the mesher's own time,
-  /// without loading the module (libgmsh's start-up) or reading the mesh back.
+  /// without loading the module (libgmsh's start-up) or reading the mesh back. After a failed
+  /// optimizer (below), the time of the run that succeeded.
   double seconds = 0;
+  /// Gmsh's own error when its tetrahedral optimizer (Mesh.Optimize, on by default) failed and
+  /// the mesh is the retry without it; empty when the optimized mesh is the result.
+  std::string optimizer_failure;
 };
 
 /// \pre every region's edges form vertex-disjoint simple closed curves; size > 0. Throws
@@ -72,6 +77,10 @@ GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& regions, double size
 /// Gmsh's 3D Delaunay on the regions' closed surfaces, the surface triangles kept as Gmsh's
 /// boundary mesh (spec/generation.md#gmsh-3d). Gmsh may still change the boundary (its boundary
 /// recovery can add Steiner points), so the caller checks the result against the surfaces.
+/// Gmsh 4.8's optimizer (sliver removal after the Delaunay step) can stop on an internal error
+/// ("a deleted triangle is a neighbor of a non deleted triangle", seen on tsv-128 at size
+/// 0.046773); then the regions are meshed again with Mesh.Optimize = 0 and the failure is kept in
+/// optimizer_failure, so that the peer still has a mesh and the report says which one.
 /// \pre each triangle lies in one or two regions' lists; size > 0. Throws MeshingError otherwise,
 /// when Gmsh fails, or when the module cannot be loaded.
 GmshTetrahedra mesh_with_gmsh_3d(const ClosedSurfaces& regions, double size);

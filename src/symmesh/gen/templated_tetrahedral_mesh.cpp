@@ -242,6 +242,10 @@ void mesh_whole_by_gmsh(const core::TemplatedStructure<FT, 3>& x,
   long f0 = minor_faults();
   const auto g = mesh_with_gmsh_3d(in, o.size);
   r.timings.template_meshing = g.seconds; // the module's own span: model build and generate(3)
+  r.gmsh_optimizer_failure = g.optimizer_failure;
+  if (o.progress && !g.optimizer_failure.empty())
+    o.progress->message("Gmsh's optimizer failed (" + g.optimizer_failure +
+                        "); the mesh is Gmsh's Delaunay without optimization");
   r.timings.page_faults.template_meshing = minor_faults() - f0;
   const auto t0 = Clock::now();
   f0 = minor_faults();

@@ -83,6 +83,9 @@ struct GenerationResult {
   /// beyond its bounds before and after it, and its flips and vertex moves.
   std::size_t outliers_before = 0, outliers_after = 0, repair_flips = 0, repair_moves = 0,
               repair_removals = 0;
+  /// --method gmsh in 3D: Gmsh's error when its optimizer failed and the mesh is the retry
+  /// without it (gmsh_mesher.h); empty otherwise.
+  std::string gmsh_optimizer_failure;
 };
 
 /// The generation methods of `symmesh generate --method` (spec/generation.md):
