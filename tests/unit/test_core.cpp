@@ -74,6 +74,25 @@ TEST(RigidTransformation, QuaternionRotationIsOrthogonal) {
   EXPECT_EQ((r * r.inverse()), T3());
 }
 
+// rotation_about_axis checks |u| = 1 and c² + s² = 1 only; Rodrigues' matrix is then orthogonal
+// (is_valid agrees), fixes the axis line and turns a perpendicular vector by the angle. Dropping
+// either hypothesis is refused.
+TEST(RigidTransformation, AxisRotationIsOrthogonalAndFixesItsAxis) {
+  const P3 u{{Exact(1) / 3, Exact(2) / 3, Exact(2) / 3}};
+  const P3 c = p3(1, 0, -2);
+  const P3 on_axis{{Exact(4) / 3, Exact(2) / 3, Exact(-4) / 3}}; // c + u
+  const auto r = T3::rotation_about_axis(Exact(3) / 5, Exact(4) / 5, u, c);
+  EXPECT_TRUE(r.is_valid());
+  EXPECT_EQ(r.determinant_of_linear_part(), Exact(1));
+  EXPECT_EQ(r(c), c);
+  EXPECT_EQ(r(on_axis), on_axis);
+  const auto z = T3::rotation_about_axis(Exact(0), Exact(1), p3(0, 0, 1), p3(0, 0, 0));
+  EXPECT_EQ(z(p3(1, 0, 5)), p3(0, 1, 5));
+  EXPECT_THROW(T3::rotation_about_axis(Exact(3) / 5, Exact(4) / 5, p3(1, 1, 0), c),
+               std::invalid_argument);
+  EXPECT_THROW(T3::rotation_about_axis(Exact(1) / 2, Exact(1) / 2, u, c), std::invalid_argument);
+}
+
 TEST(RigidTransformation, NonOrthogonalMatrixIsRejected) {
   T2::Mat a{{{Exact(1), Exact(1) / 1000}, {Exact(0), Exact(1)}}};
   EXPECT_THROW(T2::from_matrix(a, p2(0, 0)), std::invalid_argument);

@@ -848,7 +848,16 @@ Cyclotomic& Cyclotomic::operator+=(const Cyclotomic& o) {
     field_ = f;
   }
   if (o.field_ || !f) {
-    for (std::size_t i = 0; i < coefficients_.size(); ++i) coefficients_[i] += o.coefficients_[i];
+    // Most coefficients of a point's or a rotation's entry are 0 (a few powers of ζ): skipping
+    // them saves mpq_add's gcds and temporaries, which dominated the exact steps in K_256.
+    for (std::size_t i = 0; i < coefficients_.size(); ++i) {
+      const auto& c = o.coefficients_[i];
+      if (sgn(c) == 0) continue;
+      if (sgn(coefficients_[i]) == 0)
+        coefficients_[i] = c;
+      else
+        coefficients_[i] += c;
+    }
   } else {
     coefficients_[0] += o.coefficients_[0];
   }
@@ -862,7 +871,14 @@ Cyclotomic& Cyclotomic::operator-=(const Cyclotomic& o) {
     field_ = f;
   }
   if (o.field_ || !f) {
-    for (std::size_t i = 0; i < coefficients_.size(); ++i) coefficients_[i] -= o.coefficients_[i];
+    for (std::size_t i = 0; i < coefficients_.size(); ++i) {
+      const auto& c = o.coefficients_[i];
+      if (sgn(c) == 0) continue;
+      if (sgn(coefficients_[i]) == 0)
+        mpq_neg(coefficients_[i].get_mpq_t(), c.get_mpq_t());
+      else
+        coefficients_[i] -= c;
+    }
   } else {
     coefficients_[0] -= o.coefficients_[0];
   }

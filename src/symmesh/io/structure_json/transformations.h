@@ -88,18 +88,12 @@ Rigid<FT, D> symbolic_rotation(const json& r, const std::string& path,
     check_keys(r, path, {"order", "k", "axis", "center"});
   const auto [k, n] = get_angle(r, path);
   const auto [c, s] = cos_sin<FT>(k, n, dot(path, "order"));
-  typename Rigid<FT, D>::Mat a;
   if constexpr (D == 2) {
-    a = {{{c, -s}, {s, c}}};
+    return guarded(path, [&] { return Rigid<FT, D>::rotation_2d(c, s, center); });
   } else {
     const auto u = get_unit_axis<FT>(require(r, "axis", path), dot(path, "axis"));
-    const FT one = from_rational<FT>(1);
-    const FT t = one - c;
-    a = {{{c + t * u[0] * u[0], t * u[0] * u[1] - s * u[2], t * u[0] * u[2] + s * u[1]},
-          {t * u[1] * u[0] + s * u[2], c + t * u[1] * u[1], t * u[1] * u[2] - s * u[0]},
-          {t * u[2] * u[0] - s * u[1], t * u[2] * u[1] + s * u[0], c + t * u[2] * u[2]}}};
+    return guarded(path, [&] { return Rigid<FT, D>::rotation_about_axis(c, s, u, center); });
   }
-  return about_center<FT, D>(a, center, path);
 }
 
 template <class FT, int D>
