@@ -76,11 +76,16 @@ bool inside(const std::vector<std::array<double, 2>>& p, const Loop& l, std::arr
   return in;
 }
 
-/// Gmsh reports a failure by an exception of its own and its last logged error.
-[[noreturn]] void throw_gmsh_error() {
+/// Gmsh's last logged error, after it threw an exception of its own.
+std::string last_gmsh_error() {
   std::string why;
   gmsh::logger::getLastError(why);
-  throw MeshingError("Gmsh baseline: " + (why.empty() ? std::string("Gmsh failed") : why));
+  return why.empty() ? std::string("Gmsh failed") : why;
+}
+
+/// Gmsh reports a failure by an exception of its own and its last logged error.
+[[noreturn]] void throw_gmsh_error() {
+  throw MeshingError("Gmsh baseline: " + last_gmsh_error());
 }
 
 /// Gmsh's API state is global: initialise on entry, finalise on every exit.
@@ -174,9 +179,10 @@ GmshTriangles mesh_with_gmsh_in_module(const PlanarRegions& in, double size) {
 
 namespace {
 
-/// Gmsh's own failure inside generate(3) (its message), as opposed to a check of ours.
-struct GmshInternalError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+/// Gmsh's own failure inside generate(3), as opposed to a check of ours; `why` is Gmsh's message.
+struct GmshInternalError : MeshingError {
+  explicit GmshInternalError(const std::string& w) : MeshingError("Gmsh baseline: " + w), why(w) {}
+  std::string why;
 };
 
 /// The node tags of each discrete surface's triangles, by the regions it bounds (the second
@@ -231,9 +237,7 @@ GmshTetrahedra mesh_discrete_volumes(const ClosedSurfaces& in, double size,
   } catch (const MeshingError&) {
     throw;
   } catch (...) {
-    std::string why;
-    gmsh::logger::getLastError(why);
-    throw GmshInternalError(why.empty() ? std::string("Gmsh failed") : why);
+    throw GmshInternalError(last_gmsh_error());
   }
   GmshTetrahedra out;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -327,7 +331,7 @@ GmshTetrahedra mesh_with_gmsh_3d_in_module(const ClosedSurfaces& in, double size
   } catch (const GmshInternalError& e) {
     auto out =
         mesh_discrete_volumes(in, size, surface_nodes, false, std::chrono::steady_clock::now());
-    out.optimizer_failure = e.what();
+    out.optimizer_failure = e.why;
     return out;
   }
 }
